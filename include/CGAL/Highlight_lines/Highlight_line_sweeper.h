@@ -1,0 +1,228 @@
+// Copyright (c) 2026 The Highlight_lines package authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_HIGHLIGHT_LINES_HIGHLIGHT_LINE_SWEEPER_H
+#define CGAL_HIGHLIGHT_LINES_HIGHLIGHT_LINE_SWEEPER_H
+
+#include <CGAL/Highlight_lines/Highlight_line_model.h>
+#include <CGAL/Highlight_lines/Invalid_input.h>
+#include <CGAL/Highlight_lines/Light_setup.h>
+#include <CGAL/Highlight_lines/parameters.h>
+#include <CGAL/Highlight_lines/internal/Local_mesh.h>
+#include <CGAL/Highlight_lines/internal/highlight_nodes.h>
+#include <CGAL/Highlight_lines/internal/level_classification.h>
+#include <CGAL/Highlight_lines/internal/line_tracing.h>
+#include <CGAL/Highlight_lines/internal/node_connection.h>
+#include <CGAL/Highlight_lines/internal/vertex_normals.h>
+
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/boost/graph/properties.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Highlight_lines {
+
+/*!
+\ingroup PkgHighlightLinesRef
+
+Computes highlight line models of one triangle mesh for many light setups, cheaply.
+
+Everything that does not depend on the lights is computed once, in the constructor: a flat
+copy of the mesh part the model is computed on, the vertex normals of eq. 3 and the input
+checks. `compute()` then only evaluates the highlight distance values, classifies the
+vertices against the levels, places the nodes and connects them. This is what an interactive
+sweep of the light setup over the surface needs (§3: "translating and rotating ... the array
+of linear light sources").
+
+When the mesh moves (e.g. during fairing), call `update_positions()`.
+
+\tparam TriangleMesh a model of `FaceGraph` whose faces are triangles
+\tparam VertexPointMap a model of `ReadablePropertyMap` from vertices to points
+\tparam GeomTraits a model of `Kernel`, the kernel of the light setups and of the model's points
+*/
+template <typename TriangleMesh,
+          typename VertexPointMap =
+              typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type,
+          typename GeomTraits = typename CGAL::Kernel_traits<
+              typename boost::property_traits<VertexPointMap>::value_type>::Kernel>
+class Highlight_line_sweeper
+{
+public:
+  typedef Highlight_line_model<TriangleMesh, GeomTraits> Model;
+  typedef Light_setup<GeomTraits> Lights;
+
+  /*!
+  Prepares the computation on `tm`.
+
+  \param tm the mesh; it must outlive the sweeper.
+  \param np an optional sequence of named parameters among:
+    - `Highlight_lines::parameters::face_range(faces)`: compute the model on these faces only
+      (default: all faces). Vertex normals still use the full one-ring of each vertex, so
+      the model on a range is the whole mesh's model restricted to the range.
+    - `CGAL::parameters::vertex_point_map(vpm)` (default: the internal point map).
+    - `CGAL::parameters::vertex_index_map`, `face_index_map`, `halfedge_index_map` (default:
+      internal index maps, or dynamic ones initialised here).
+
+  \throws Invalid_input if a face involved is not a triangle or is degenerate, or a vertex has
+  a non-finite coordinate.
+  */
+  template <typename NamedParameters = CGAL::parameters::Default_named_parameters>
+  explicit Highlight_line_sweeper(const TriangleMesh& tm,
+                                  const NamedParameters& np = CGAL::parameters::default_values())
+      : tm_(&tm), vpm_(CGAL::parameters::choose_parameter(
+                      CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                      get_const_property_map(CGAL::vertex_point, tm)))
+  {
+    using CGAL::parameters::get_parameter_reference;
+    using CGAL::parameters::is_default_parameter;
+    auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+    auto fim = CGAL::get_initialized_face_index_map(tm, np);
+    auto him = CGAL::get_initialized_halfedge_index_map(tm, np);
+    constexpr bool whole_mesh =
+        is_default_parameter<NamedParameters, internal_np::face_range_t>::value;
+    if constexpr (whole_mesh)
+      internal::build_local_mesh(tm, faces(tm), true, vpm_, vim, fim, him, mesh_);
+    else
+      internal::build_local_mesh(tm, get_parameter_reference(np, internal_np::face_range), false,
+                                 vpm_, vim, fim, him, mesh_);
+    compute_normals();
+  }
+
+  /// Re-reads the points of all vertices involved from the vertex point map and recomputes
+  /// the normals. \throws Invalid_input as the constructor.
+  void update_positions()
+  {
+    for (std::size_t v = 0; v < mesh_.vertex_handles.size(); ++v) {
+      const auto& p = get(vpm_, mesh_.vertex_handles[v]);
+      const double c[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+      for (int k = 0; k < 3; ++k) {
+        if (!std::isfinite(c[k]))
+          throw Invalid_input(Invalid_input::Problem::NON_FINITE_COORDINATE,
+                              "vertex " + std::to_string(mesh_.vertex_indices[v]) +
+                                  " has a non-finite coordinate " + internal::describe_point(c),
+                              mesh_.vertex_indices[v]);
+        mesh_.xyz[3 * v + std::size_t(k)] = c[k];
+      }
+    }
+    compute_normals();
+  }
+
+  /*!
+  Computes the highlight line model for `lights`.
+
+  \param lights the light setup.
+  \param np an optional sequence of named parameters among:
+    - `Highlight_lines::parameters::level_range(std::pair<long long, long long>(lo, hi))`:
+      only the lights with index `m` in `[lo, hi]` (default: all).
+    - `Highlight_lines::parameters::max_levels_per_edge(n)`: an edge that would carry more
+      than `n` nodes (it crosses more than `n` lights: its normals turn almost parallel to
+      the light plane) is skipped with its faces and counted in
+      `Model::number_of_skipped_edges()`. Default: 256.
+  */
+  template <typename NamedParameters = CGAL::parameters::Default_named_parameters>
+  Model compute(const Lights& lights,
+                const NamedParameters& np = CGAL::parameters::default_values()) const
+  {
+    using CGAL::parameters::choose_parameter;
+    using CGAL::parameters::get_parameter;
+    internal::Level_window window;
+    const auto range = choose_parameter(get_parameter(np, internal_np::level_range),
+                                        std::make_pair(window.lowest, window.highest));
+    window.lowest = (std::max)(window.lowest, (long long)(range.first));
+    window.highest = (std::min)(window.highest, (long long)(range.second));
+    const auto cap = choose_parameter(get_parameter(np, internal_np::max_levels_per_edge),
+                                      window.max_levels_per_edge);
+    if (!(cap >= 1))
+      throw Invalid_input(Invalid_input::Problem::INVALID_PARAMETER,
+                          "max_levels_per_edge must be at least 1");
+    window.max_levels_per_edge = std::size_t(cap);
+
+    classify(lights, levels_);
+    internal::Highlight_nodes nodes;
+    internal::compute_highlight_nodes(mesh_, levels_, lights.spacing_value(), window, nodes);
+    internal::Highlight_segments segments;
+    internal::connect_highlight_nodes(mesh_, levels_, nodes, window, segments);
+    internal::Traced_lines traced;
+    internal::trace_lines(nodes.nodes, segments.segments, traced);
+
+    // Nodes that no segment reaches (edges whose faces were all left out, extrema lying
+    // exactly on a level) carry no line; they are sorted last and dropped.
+    std::size_t kept = traced.new_order.size();
+    while (kept > 0 && traced.degree[std::size_t(traced.new_order[kept - 1])] == 0)
+      --kept;
+    std::vector<typename Model::Node> model_nodes(kept);
+    for (std::size_t i = 0; i < kept; ++i) {
+      const internal::Raw_node& raw = nodes.nodes[std::size_t(traced.new_order[i])];
+      typename Model::Node& node = model_nodes[i];
+      node.point = typename GeomTraits::Point_3(raw.point[0], raw.point[1], raw.point[2]);
+      node.level = raw.level;
+      node.degree = std::size_t(traced.degree[std::size_t(traced.new_order[i])]);
+      if (raw.edge >= 0) {
+        node.halfedge = mesh_.edge_halfedges[std::size_t(raw.edge)];
+        node.parameter = raw.parameter;
+      } else {
+        node.vertex = mesh_.vertex_handles[std::size_t(raw.vertex)];
+      }
+    }
+    std::vector<typename Model::Line> model_lines(traced.lines.size());
+    for (std::size_t i = 0; i < traced.lines.size(); ++i) {
+      model_lines[i].level = traced.lines[i].level;
+      model_lines[i].is_closed = traced.lines[i].closed;
+      model_lines[i].nodes.assign(traced.lines[i].nodes.begin(), traced.lines[i].nodes.end());
+    }
+    std::size_t undefined = 0, out_of_range = 0;
+    for (std::size_t v = 0; v < mesh_.number_of_model_vertices; ++v) {
+      undefined += levels_[v].normal_side == 0;
+      out_of_range += levels_[v].out_of_range;
+    }
+    return Model(lights, std::move(model_nodes), std::move(model_lines), segments.segments.size(),
+                 nodes.number_of_capped_edges, undefined, out_of_range);
+  }
+
+  /// Number of faces the model is computed on.
+  std::size_t number_of_faces() const { return mesh_.number_of_model_faces; }
+  /// Number of vertices of those faces.
+  std::size_t number_of_vertices() const { return mesh_.number_of_model_vertices; }
+
+  /// \cond SKIP_IN_MANUAL
+  const internal::Local_mesh<TriangleMesh>& local_mesh() const { return mesh_; }
+  const internal::Vertex_normals& vertex_normals() const { return normals_; }
+  const std::vector<internal::Vertex_level>& last_vertex_levels() const { return levels_; }
+  const internal::Classification_statistics& statistics() const { return statistics_; }
+
+  void classify(const Lights& lights, std::vector<internal::Vertex_level>& levels) const
+  {
+    const internal::Level_classifier<TriangleMesh> classifier(
+        mesh_, normals_, lights.base_point_array(), lights.light_direction_array(),
+        lights.plane_normal_array(), lights.spacing_value());
+    levels.resize(mesh_.number_of_model_vertices);
+    for (std::size_t v = 0; v < mesh_.number_of_model_vertices; ++v)
+      levels[v] = classifier.classify(int(v), statistics_);
+  }
+  /// \endcond
+
+private:
+  void compute_normals()
+  {
+    internal::compute_face_cross_products(mesh_, normals_);
+    internal::check_model_faces_not_degenerate(mesh_, normals_);
+    internal::accumulate_vertex_normals(mesh_, normals_);
+  }
+
+  const TriangleMesh* tm_;
+  VertexPointMap vpm_;
+  internal::Local_mesh<TriangleMesh> mesh_;
+  internal::Vertex_normals normals_;
+  mutable std::vector<internal::Vertex_level> levels_;
+  mutable internal::Classification_statistics statistics_;
+};
+
+} // namespace Highlight_lines
+} // namespace CGAL
+
+#endif // CGAL_HIGHLIGHT_LINES_HIGHLIGHT_LINE_SWEEPER_H

@@ -1,0 +1,198 @@
+// Copyright (c) 2026 The Highlight_lines package authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_LEVEL_CLASSIFICATION_H
+#define CGAL_HIGHLIGHT_LINES_INTERNAL_LEVEL_CLASSIFICATION_H
+
+#include <CGAL/Highlight_lines/Light_setup.h>
+#include <CGAL/Highlight_lines/internal/Local_mesh.h>
+#include <CGAL/Highlight_lines/internal/vertex_normals.h>
+
+#include <CGAL/Interval_nt.h>
+#include <CGAL/Number_types/internal/Exact_type_selector.h>
+#include <CGAL/FPU.h>
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace CGAL {
+namespace Highlight_lines {
+namespace internal {
+
+// Where the highlight distance value d of a vertex (eq. 1) lies among the levels m·s.
+// Decided once per vertex and cached: edges and faces read these classes, so all elements
+// incident to a vertex agree on it by construction.
+struct Vertex_level
+{
+  long long level = 0;         // k with k·s <= d < (k+1)·s
+  signed char normal_side = 0; // sign of Z·Ñ; 0: the normal line is parallel to S, d undefined
+  bool on_level = false;       // d == k·s exactly
+  bool out_of_range = false;   // |d/s| >= 2^50: normal almost parallel to S, levels unusable
+  double distance = 0;         // d in double (exactly k·s when on_level)
+
+  bool defined() const { return normal_side != 0 && !out_of_range; }
+
+  // Sign of d - m·s, for a defined vertex.
+  int compare_to_level(long long m) const
+  {
+    if (level > m)
+      return 1;
+    if (level < m)
+      return -1;
+    return on_level ? 0 : 1;
+  }
+};
+
+// Statistics of the filter, for tests and benchmarks.
+struct Classification_statistics
+{
+  std::size_t static_filter_failures = 0;
+  std::size_t interval_filter_failures = 0;
+};
+
+// The polynomial predicate of the classification. With W = P - A0 and Ñ the unnormalised
+// normal (eq. 3), d - m·s has the sign of  E(m) = (W x H)·Ñ - (m·s)(Z·Ñ)  times sign(Z·Ñ).
+// E is evaluated in three stages: double with a running error bound (almost always enough),
+// interval arithmetic, and an exact ring type, always from the one-ring points so that the
+// answer is exact for the double input coordinates.
+template <typename TriangleMesh>
+class Level_classifier
+{
+private:
+  // The terms of E in double for one vertex, with their magnitudes and the depth bound.
+  struct Terms
+  {
+    double num = 0, num_magnitude = 0, den = 0, den_magnitude = 0, depth = 0;
+  };
+
+public:
+  Level_classifier(const Local_mesh<TriangleMesh>& lm, const Vertex_normals& vn,
+                   const std::array<double, 3>& a, const std::array<double, 3>& h,
+                   const std::array<double, 3>& z, double s)
+      : lm_(lm), vn_(vn), a_(a), h_(h), z_(z), s_(s)
+  {
+  }
+
+  Vertex_level classify(int v, Classification_statistics& stats) const
+  {
+    Vertex_level result;
+    const double* p = lm_.point(v);
+    const double* n = &vn_.normal[3 * std::size_t(v)];
+    const double* nm = &vn_.normal_magnitude[3 * std::size_t(v)];
+    const double w[3] = {p[0] - a_[0], p[1] - a_[1], p[2] - a_[2]};
+    const double wm[3] = {std::abs(p[0]) + std::abs(a_[0]), std::abs(p[1]) + std::abs(a_[1]),
+                          std::abs(p[2]) + std::abs(a_[2])};
+    const double x[3] = {w[1] * h_[2] - w[2] * h_[1], w[2] * h_[0] - w[0] * h_[2],
+                         w[0] * h_[1] - w[1] * h_[0]};
+    const double xm[3] = {wm[1] * std::abs(h_[2]) + wm[2] * std::abs(h_[1]),
+                          wm[2] * std::abs(h_[0]) + wm[0] * std::abs(h_[2]),
+                          wm[0] * std::abs(h_[1]) + wm[1] * std::abs(h_[0])};
+    Terms t;
+    t.num = x[0] * n[0] + x[1] * n[1] + x[2] * n[2];
+    t.num_magnitude = xm[0] * nm[0] + xm[1] * nm[1] + xm[2] * nm[2];
+    t.den = z_[0] * n[0] + z_[1] * n[1] + z_[2] * n[2];
+    t.den_magnitude = std::abs(z_[0]) * nm[0] + std::abs(z_[1]) * nm[1] + std::abs(z_[2]) * nm[2];
+    t.depth = double(vn_.valence[std::size_t(v)] + 16);
+
+    // Side of the light plane the normal points to.
+    const double den_bound = t.depth * error_per_operation * t.den_magnitude;
+    if (std::abs(t.den) > den_bound && den_bound > min_magnitude)
+      result.normal_side = t.den > 0 ? 1 : -1;
+    else {
+      ++stats.static_filter_failures;
+      result.normal_side = signed_char(exact_sign(v, nullptr, stats));
+      if (result.normal_side == 0)
+        return result;
+    }
+
+    const double d = t.num / t.den;
+    const double q = d / s_;
+    if (!(std::abs(q) < 1125899906842624.0)) { // 2^50: also catches inf and NaN
+      result.out_of_range = true;
+      return result;
+    }
+    long long k = static_cast<long long>(std::floor(q));
+    // Find k with d - k·s >= 0 and d - (k+1)·s < 0; q is accurate, so this moves k at most once.
+    for (int guard = 0; guard < 64; ++guard) {
+      const int below = result.normal_side * sign_of_E(v, t, k, stats); // sign(d - k·s)
+      if (below < 0) {
+        --k;
+        continue;
+      }
+      if (below == 0) {
+        result.on_level = true;
+        break;
+      }
+      const int above = result.normal_side * sign_of_E(v, t, k + 1, stats); // sign(d - (k+1)·s)
+      if (above >= 0) {
+        ++k;
+        continue;
+      }
+      break;
+    }
+    result.level = k;
+    result.distance = result.on_level ? double(k) * s_ : d;
+    return result;
+  }
+
+private:
+  static constexpr double min_magnitude = 1e-250; // below it, underflow voids the bounds
+
+  // Sign of E(m) for vertex v, whose terms are t.
+  int sign_of_E(int v, const Terms& t, long long m, Classification_statistics& stats) const
+  {
+    const double ms = double(m) * s_;
+    const double e = t.num - ms * t.den;
+    const double magnitude = t.num_magnitude + std::abs(ms) * t.den_magnitude;
+    const double bound = t.depth * error_per_operation * magnitude;
+    if (std::abs(e) > bound && bound > min_magnitude && std::isfinite(bound))
+      return e > 0 ? 1 : -1;
+    ++stats.static_filter_failures;
+    return exact_sign(v, &m, stats);
+  }
+
+  // Sign of E(*m), or of Z·Ñ if m is null: interval filter, then exact.
+  int exact_sign(int v, const long long* m, Classification_statistics& stats) const
+  {
+    {
+      CGAL::Protect_FPU_rounding<true> protection;
+      const CGAL::Uncertain<CGAL::Sign> sign =
+          CGAL::sign(evaluate<CGAL::Interval_nt_advanced>(v, m));
+      if (CGAL::is_certain(sign))
+        return int(CGAL::get_certain(sign));
+    }
+    ++stats.interval_filter_failures;
+    typedef typename CGAL::internal::Exact_ring_selector<double>::Type Exact;
+    return int(CGAL::sign(evaluate<Exact>(v, m)));
+  }
+
+  template <typename NT>
+  NT evaluate(int v, const long long* m) const
+  {
+    const std::array<NT, 3> n = unnormalized_vertex_normal<NT>(lm_, v);
+    const NT den = NT(z_[0]) * n[0] + NT(z_[1]) * n[1] + NT(z_[2]) * n[2];
+    if (m == nullptr)
+      return den;
+    const double* p = lm_.point(v);
+    const NT w[3] = {NT(p[0]) - NT(a_[0]), NT(p[1]) - NT(a_[1]), NT(p[2]) - NT(a_[2])};
+    const NT x[3] = {w[1] * NT(h_[2]) - w[2] * NT(h_[1]), w[2] * NT(h_[0]) - w[0] * NT(h_[2]),
+                     w[0] * NT(h_[1]) - w[1] * NT(h_[0])};
+    const NT num = x[0] * n[0] + x[1] * n[1] + x[2] * n[2];
+    // m·s formed in NT: |m| < 2^50 converts to double exactly.
+    return num - (NT(double(*m)) * NT(s_)) * den;
+  }
+
+  typedef signed char signed_char;
+
+  const Local_mesh<TriangleMesh>& lm_;
+  const Vertex_normals& vn_;
+  std::array<double, 3> a_, h_, z_;
+  double s_;
+};
+
+} // namespace internal
+} // namespace Highlight_lines
+} // namespace CGAL
+
+#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_LEVEL_CLASSIFICATION_H

@@ -1,0 +1,98 @@
+// Copyright (c) 2026 The Highlight_lines package authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_COMPUTE_HIGHLIGHT_LINES_H
+#define CGAL_COMPUTE_HIGHLIGHT_LINES_H
+
+#include <CGAL/Highlight_lines/Highlight_line_model.h>
+#include <CGAL/Highlight_lines/Highlight_line_sweeper.h>
+#include <CGAL/Highlight_lines/Invalid_input.h>
+#include <CGAL/Highlight_lines/Light_setup.h>
+#include <CGAL/Highlight_lines/parameters.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+
+namespace CGAL {
+
+/*!
+\ingroup PkgHighlightLinesRef
+
+Computes the highlight line model of a triangle mesh (§2 of the paper, with the corrections
+of the package's specification) and writes its lines as polylines.
+
+The steps: the vertex normals of eq. 3 (area-weighted sum of face normals, not the weighting
+of `Polygon_mesh_processing::compute_vertex_normals()`); the highlight distance value `d` of
+every vertex (eq. 1); a node on each edge for every light index `m` with `m·s` strictly
+between the `d` values of its ends (corrected eq. 4), or on a vertex whose `d` equals `m·s`;
+per triangle, nodes of the same index are joined, and an edge whose ends lie on one level is
+a segment itself (Fig. 2).
+
+Whether a vertex lies below, on or above a level is decided exactly (a filtered predicate on
+the input coordinates, with an exact fallback), once per vertex: the topology of the lines is
+right even for vertices exactly on a level. Where the normal of a vertex is parallel to the
+light plane (`Z·N = 0`), `d` is undefined: no node is placed on the edges at that vertex, nor
+on edges whose ends see the light plane from different sides; lines end there.
+
+\tparam TriangleMesh a model of `FaceGraph` whose faces are triangles
+\tparam GeomTraits a model of `Kernel`
+\tparam PolylineOutputIterator an output iterator accepting `std::vector<GeomTraits::Point_3>`
+\tparam NamedParameters a sequence of named parameters
+
+\param tm the mesh
+\param lights the light setup
+\param out receives one polyline per highlight line; a closed line repeats its first point
+\param np an optional sequence of named parameters among:
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{vertex_point_map}
+      \cgalParamDescription{a property map associating points to the vertices of `tm`}
+      \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_index_map, face_index_map, halfedge_index_map}
+      \cgalParamDescription{index property maps of the mesh elements}
+      \cgalParamDefault{the internal maps, or dynamic ones initialised here}
+    \cgalParamNEnd
+    \cgalParamNBegin{Highlight_lines::parameters::face_range}
+      \cgalParamDescription{a range of faces of `tm`: the model is computed on them only;
+        vertex normals still use the full one-rings, so the result is the whole model
+        restricted to these faces. Time and memory are proportional to the range.}
+      \cgalParamDefault{all faces}
+    \cgalParamNEnd
+    \cgalParamNBegin{Highlight_lines::parameters::level_range}
+      \cgalParamDescription{a `std::pair` of integers `(lo, hi)`: only lights with index in
+        `[lo, hi]`}
+      \cgalParamDefault{all lights}
+    \cgalParamNEnd
+    \cgalParamNBegin{Highlight_lines::parameters::max_levels_per_edge}
+      \cgalParamDescription{an edge crossing more levels is skipped together with its faces
+        and counted in `number_of_skipped_edges()`; this bounds the output near where the
+        normals turn parallel to the light plane and `d` grows without bound}
+      \cgalParamDefault{256}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+
+\returns the highlight line model: nodes (position, index, carrying edge or vertex,
+parameter on the edge) and lines as node sequences.
+
+\throws Highlight_lines::Invalid_input if a face involved is not a triangle or is
+degenerate, if a vertex has a non-finite coordinate, or if a named parameter is out of its
+domain. Light setups are validated when they are constructed.
+
+\sa `Highlight_lines::Highlight_line_sweeper` to compute models for many light setups.
+*/
+template <typename TriangleMesh, typename GeomTraits, typename PolylineOutputIterator,
+          typename NamedParameters = parameters::Default_named_parameters>
+Highlight_lines::Highlight_line_model<TriangleMesh, GeomTraits> compute_highlight_lines(
+    const TriangleMesh& tm, const Highlight_lines::Light_setup<GeomTraits>& lights,
+    PolylineOutputIterator out, const NamedParameters& np = parameters::default_values())
+{
+  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type Vertex_point_map;
+  const Highlight_lines::Highlight_line_sweeper<TriangleMesh, Vertex_point_map, GeomTraits> sweeper(
+      tm, np);
+  auto model = sweeper.compute(lights, np);
+  model.polylines(out);
+  return model;
+}
+
+} // namespace CGAL
+
+#endif // CGAL_COMPUTE_HIGHLIGHT_LINES_H

@@ -1,0 +1,158 @@
+// Mesh generators and helpers shared by the model tests.
+#ifndef HIGHLIGHT_LINES_TEST_MESHES_H
+#define HIGHLIGHT_LINES_TEST_MESHES_H
+
+#include <CGAL/Highlight_lines/Light_setup.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <cmath>
+#include <functional>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace test {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point;
+typedef K::Vector_3 Vector;
+typedef CGAL::Surface_mesh<Point> Surface_mesh;
+typedef CGAL::Polyhedron_3<K> Polyhedron;
+typedef CGAL::Highlight_lines::Light_setup<K> Lights;
+
+struct Soup
+{
+  std::vector<Point> points;
+  std::vector<std::array<std::size_t, 3>> triangles;
+};
+
+template <typename Mesh>
+Mesh to_mesh(const Soup& soup)
+{
+  Mesh mesh;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(soup.points, soup.triangles, mesh);
+  return mesh;
+}
+
+// A grid of (n+1) x (n+1) vertices over [x0, x0 + n*step] x [y0, y0 + n*step], lifted by
+// height(x, y). Every cell is split along the diagonal of the same direction, so the grid is
+// symmetric under the half-turn about its centre. jitter moves interior vertices in x and y.
+inline Soup grid(int n, double step, double x0, double y0,
+                 const std::function<double(double, double)>& height, double jitter = 0,
+                 unsigned seed = 1)
+{
+  Soup soup;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-jitter, jitter);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      double x = x0 + i * step, y = y0 + j * step;
+      if (jitter > 0 && i > 0 && j > 0 && i < n && j < n) {
+        x += u(rng) * step;
+        y += u(rng) * step;
+      }
+      soup.points.emplace_back(x, y, height(x, y));
+    }
+  auto id = [n](int i, int j) { return std::size_t(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      soup.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      soup.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return soup;
+}
+
+// Cylinder x^2 + z^2 = r^2 around the y axis, angles in [-half_angle, half_angle] from +z,
+// y in [0, length]; `around` x `along` cells, optionally with jittered interior vertices.
+inline Soup cylinder_patch(double r, double half_angle, double length, int around, int along,
+                           double jitter = 0, unsigned seed = 7)
+{
+  Soup soup;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-jitter, jitter);
+  for (int j = 0; j <= along; ++j)
+    for (int i = 0; i <= around; ++i) {
+      double a = -half_angle + 2 * half_angle * i / around, y = length * j / along;
+      if (jitter > 0 && i > 0 && j > 0 && i < around && j < along) {
+        a += u(rng) * 2 * half_angle / around;
+        y += u(rng) * length / along;
+      }
+      soup.points.emplace_back(r * std::sin(a), y, r * std::cos(a));
+    }
+  auto id = [around](int i, int j) { return std::size_t(j * (around + 1) + i); };
+  for (int j = 0; j < along; ++j)
+    for (int i = 0; i < around; ++i) {
+      soup.triangles.push_back({id(i, j), id(i, j + 1), id(i + 1, j)});
+      soup.triangles.push_back({id(i + 1, j), id(i, j + 1), id(i + 1, j + 1)});
+    }
+  return soup;
+}
+
+// Unit-radius-r sphere by subdividing an octahedron `levels` times, projected.
+inline Soup sphere(double r, int levels)
+{
+  Soup soup;
+  soup.points = {Point(1, 0, 0),  Point(-1, 0, 0), Point(0, 1, 0),
+                 Point(0, -1, 0), Point(0, 0, 1),  Point(0, 0, -1)};
+  soup.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
+                    {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+  for (int l = 0; l < levels; ++l) {
+    std::map<std::pair<std::size_t, std::size_t>, std::size_t> mid;
+    auto midpoint = [&](std::size_t a, std::size_t b) {
+      auto key = std::make_pair((std::min)(a, b), (std::max)(a, b));
+      auto it = mid.find(key);
+      if (it != mid.end())
+        return it->second;
+      const Point& p = soup.points[a];
+      const Point& q = soup.points[b];
+      soup.points.push_back(CGAL::midpoint(p, q));
+      return mid[key] = soup.points.size() - 1;
+    };
+    std::vector<std::array<std::size_t, 3>> next;
+    for (const auto& t : soup.triangles) {
+      const std::size_t a = midpoint(t[0], t[1]), b = midpoint(t[1], t[2]),
+                        c = midpoint(t[2], t[0]);
+      next.push_back({t[0], a, c});
+      next.push_back({a, t[1], b});
+      next.push_back({c, b, t[2]});
+      next.push_back({a, b, c});
+    }
+    soup.triangles = next;
+  }
+  for (Point& p : soup.points) {
+    const double len = std::sqrt(CGAL::to_double((p - CGAL::ORIGIN).squared_length()));
+    p = Point(r * p.x() / len, r * p.y() / len, r * p.z() / len);
+  }
+  return soup;
+}
+
+// Consecutive nodes of every line, as pairs of node indices.
+template <typename Model>
+std::vector<std::pair<std::size_t, std::size_t>> segments_of(const Model& model)
+{
+  std::vector<std::pair<std::size_t, std::size_t>> result;
+  for (const auto& line : model.lines()) {
+    for (std::size_t i = 0; i + 1 < line.nodes.size(); ++i)
+      result.emplace_back(line.nodes[i], line.nodes[i + 1]);
+    if (line.is_closed)
+      result.emplace_back(line.nodes.back(), line.nodes.front());
+  }
+  return result;
+}
+
+inline std::string shared_data(const std::string& name)
+{
+  return std::string(HIGHLIGHT_LINES_SHARED_DATA_DIR) + "/" + name;
+}
+
+} // namespace test
+
+#endif
