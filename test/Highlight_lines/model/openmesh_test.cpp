@@ -1,0 +1,59 @@
+// OpenMesh, through CGAL's graph traits, gives the same model as Surface_mesh.
+#ifdef HIGHLIGHT_LINES_HAS_OPENMESH
+
+// OpenMesh's property containers trip GCC 12's -Wmaybe-uninitialized once inlined here.
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+
+#include "test_meshes.h"
+
+#include <CGAL/boost/graph/graph_traits_TriMesh_ArrayKernelT.h>
+#include <CGAL/boost/graph/properties_TriMesh_ArrayKernelT.h>
+#include <CGAL/compute_highlight_lines.h>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+
+#include <gtest/gtest.h>
+
+namespace {
+using namespace test;
+struct Double_traits : public OpenMesh::DefaultTraits
+{
+  typedef OpenMesh::Vec3d Point;
+  typedef OpenMesh::Vec3d Normal;
+};
+typedef OpenMesh::TriMesh_ArrayKernelT<Double_traits> Open_mesh;
+
+TEST(Invariance, OpenMeshAndSurfaceMeshAgree)
+{
+  const Soup soup = grid(40, 0.1, -2, -2, [](double x, double y) {
+    return 0.25 * std::sin(1.7 * x + 0.3) * std::cos(1.1 * y) + 0.04 * x * x;
+  }, 0.3, 9);
+  const Surface_mesh sm = to_mesh<Surface_mesh>(soup);
+  // Built with OpenMesh's own API: CGAL 5.5's point map for OpenMesh writes through float.
+  Open_mesh om;
+  std::vector<Open_mesh::VertexHandle> handles;
+  for (const Point& p : soup.points)
+    handles.push_back(om.add_vertex(Open_mesh::Point(p.x(), p.y(), p.z())));
+  for (const auto& t : soup.triangles)
+    om.add_face(handles[t[0]], handles[t[1]], handles[t[2]]);
+  const Lights lights(Point(0.3, -0.2, 4), Vector(0.6, 0.8, 0), Vector(0, 0, 1), 0.12);
+  const auto a = CGAL::compute_highlight_lines(sm, lights, CGAL::Emptyset_iterator());
+  const auto b = CGAL::compute_highlight_lines(om, lights, CGAL::Emptyset_iterator());
+  ASSERT_GT(a.lines().size(), 10u);
+  ASSERT_EQ(a.lines().size(), b.lines().size());
+  ASSERT_EQ(a.nodes().size(), b.nodes().size());
+  for (std::size_t i = 0; i < a.lines().size(); ++i) {
+    ASSERT_EQ(a.lines()[i].level, b.lines()[i].level);
+    ASSERT_EQ(a.lines()[i].is_closed, b.lines()[i].is_closed);
+    ASSERT_EQ(a.lines()[i].nodes, b.lines()[i].nodes);
+  }
+  for (std::size_t i = 0; i < a.nodes().size(); ++i) {
+    EXPECT_NEAR(a.nodes()[i].point.x(), CGAL::to_double(b.nodes()[i].point.x()), 1e-12);
+    EXPECT_NEAR(a.nodes()[i].point.y(), CGAL::to_double(b.nodes()[i].point.y()), 1e-12);
+    EXPECT_NEAR(a.nodes()[i].point.z(), CGAL::to_double(b.nodes()[i].point.z()), 1e-12);
+    EXPECT_EQ(a.nodes()[i].degree, b.nodes()[i].degree);
+  }
+}
+
+} // namespace
+
+#endif
