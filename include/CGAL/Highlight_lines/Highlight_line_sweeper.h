@@ -207,12 +207,7 @@ public:
   /// \endcond
 
 private:
-  void compute_normals()
-  {
-    internal::compute_face_cross_products(mesh_, normals_);
-    internal::check_model_faces_not_degenerate(mesh_, normals_);
-    internal::accumulate_vertex_normals(mesh_, normals_);
-  }
+  void compute_normals() { internal::compute_vertex_normals(mesh_, normals_); }
 
   const TriangleMesh* tm_;
   VertexPointMap vpm_;

@@ -24,9 +24,12 @@ typedef OpenMesh::TriMesh_ArrayKernelT<Double_traits> Open_mesh;
 
 TEST(Invariance, OpenMeshAndSurfaceMeshAgree)
 {
-  const Soup soup = grid(40, 0.1, -2, -2, [](double x, double y) {
-    return 0.25 * std::sin(1.7 * x + 0.3) * std::cos(1.1 * y) + 0.04 * x * x;
-  }, 0.3, 9);
+  const Soup soup = grid(
+      40, 0.1, -2, -2,
+      [](double x, double y) {
+        return 0.25 * std::sin(1.7 * x + 0.3) * std::cos(1.1 * y) + 0.04 * x * x;
+      },
+      0.3, 9);
   const Surface_mesh sm = to_mesh<Surface_mesh>(soup);
   // Built with OpenMesh's own API: CGAL 5.5's point map for OpenMesh writes through float.
   Open_mesh om;

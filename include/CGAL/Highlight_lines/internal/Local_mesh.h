@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <unordered_map>
@@ -30,6 +31,7 @@ class Compact_ids
 public:
   static constexpr int none = -1;
 
+  Compact_ids() = default;
   Compact_ids(bool dense, std::size_t bound) : dense_(dense)
   {
     if (dense_)
@@ -61,7 +63,7 @@ public:
   }
 
 private:
-  bool dense_;
+  bool dense_ = false;
   std::vector<int> table_;
   std::unordered_map<std::size_t, int> map_;
 };
@@ -96,10 +98,30 @@ struct Local_mesh
   std::vector<halfedge_descriptor> edge_halfedges; // canonical: source = edge_vertices[e][0]
   std::vector<std::array<int, 2>> edge_vertices;
 
-  // For the exact evaluations: the faces around each model vertex (CSR).
-  std::vector<int> vertex_face_begin, vertex_faces;
+  // Order in which face contributions are summed into vertex normals: by increasing face
+  // index, so that a model on a face range agrees bit for bit with the whole mesh's model.
+  // Empty: the local order, which is already that order for the whole mesh.
+  std::vector<int> face_summation_order;
+
+  // What the exact evaluations need to walk around a vertex in the mesh.
+  const TriangleMesh* mesh = nullptr;
+  Compact_ids face_ids;
+  std::function<std::size_t(face_descriptor)> face_index;
 
   const double* point(int v) const { return &xyz[3 * std::size_t(v)]; }
+
+  // Calls f(local face id) for every face incident to model vertex v (rarely used: exact
+  // fallbacks only).
+  template <typename F>
+  void for_each_face_around(int v, F&& f) const
+  {
+    for (halfedge_descriptor h :
+         halfedges_around_target(halfedge(vertex_handles[std::size_t(v)], *mesh), *mesh)) {
+      const face_descriptor fd = face(h, *mesh);
+      if (fd != boost::graph_traits<TriangleMesh>::null_face())
+        f(face_ids.find(face_index(fd)));
+    }
+  }
 };
 
 inline bool lexicographically_smaller(const double* p, const double* q)
@@ -186,6 +208,51 @@ void build_local_mesh(const TriangleMesh& tm, const FaceRange& faces, bool whole
   };
 
   // 1. Model faces, with their vertices.
+  if (whole_mesh) {
+    lm.face_handles.reserve(num_faces(tm));
+    lm.face_indices.reserve(num_faces(tm));
+    lm.face_vertices.reserve(num_faces(tm));
+    lm.vertex_handles.reserve(num_vertices(tm));
+    lm.vertex_indices.reserve(num_vertices(tm));
+    lm.xyz.reserve(3 * num_vertices(tm));
+    lm.edge_halfedges.reserve(num_edges(tm));
+    lm.edge_vertices.reserve(num_edges(tm));
+  }
+  auto add_edge = [&](halfedge_descriptor h) {
+    // An edge is keyed by the smaller index of its halfedges (CGAL 5.5 has no usable edge
+    // index map for a Polyhedron_3 without ids).
+    const std::size_t key =
+        (std::min)(std::size_t(get(him, h)), std::size_t(get(him, opposite(h, tm))));
+    bool inserted = false;
+    const int e = edge_ids.insert(key, int(lm.edge_halfedges.size()), inserted);
+    if (inserted) {
+      // Canonical direction, from the lexicographically smaller point, so that node positions
+      // do not depend on which face saw an edge first.
+      int a = vertex_ids.find(get(vim, source(h, tm))),
+          b = vertex_ids.find(get(vim, target(h, tm)));
+      if (lexicographically_smaller(lm.point(b), lm.point(a)) ||
+          (!lexicographically_smaller(lm.point(a), lm.point(b)) &&
+           lm.vertex_indices[std::size_t(b)] < lm.vertex_indices[std::size_t(a)])) {
+        std::swap(a, b);
+        h = opposite(h, tm);
+      }
+      lm.edge_halfedges.push_back(h);
+      lm.edge_vertices.push_back({a, b});
+    }
+    return e;
+  };
+
+  if (whole_mesh) {
+    // Sequential passes over vertices and edges first: cheaper than discovering them from the
+    // faces, and the ids follow the mesh's own order.
+    for (vertex_descriptor v : vertices(tm)) {
+      if (halfedge(v, tm) != boost::graph_traits<TriangleMesh>::null_halfedge())
+        add_vertex(v);
+    }
+    for (auto e : edges(tm))
+      add_edge(halfedge(e, tm));
+  }
+
   for (face_descriptor f : faces) {
     if (f == boost::graph_traits<TriangleMesh>::null_face())
       throw Invalid_input(Problem::FACE_NOT_IN_MESH, "the face range contains a null face");
@@ -194,70 +261,33 @@ void build_local_mesh(const TriangleMesh& tm, const FaceRange& faces, bool whole
   lm.number_of_model_faces = lm.face_handles.size();
   lm.number_of_model_vertices = lm.vertex_handles.size();
 
-  // 2. Edges of the model faces; canonical direction from the lexicographically smaller point
-  // so that node positions do not depend on which face saw an edge first.
+  // 2. Edges of the model faces.
   lm.face_edges.resize(lm.number_of_model_faces);
   for (std::size_t f = 0; f < lm.number_of_model_faces; ++f) {
     halfedge_descriptor h = halfedge(lm.face_handles[f], tm);
-    for (int j = 0; j < 3; ++j, h = next(h, tm)) {
-      bool inserted = false;
-      // An edge is keyed by the smaller index of its halfedges (CGAL 5.5 has no usable edge
-      // index map for a Polyhedron_3 without ids).
-      const std::size_t key =
-          (std::min)(std::size_t(get(him, h)), std::size_t(get(him, opposite(h, tm))));
-      const int e = edge_ids.insert(key, int(lm.edge_halfedges.size()), inserted);
-      if (inserted) {
-        int a = lm.face_vertices[f][j], b = lm.face_vertices[f][(j + 1) % 3];
-        halfedge_descriptor he = h;
-        if (lexicographically_smaller(lm.point(b), lm.point(a)) ||
-            (!lexicographically_smaller(lm.point(a), lm.point(b)) &&
-             lm.vertex_indices[b] < lm.vertex_indices[a])) {
-          std::swap(a, b);
-          he = opposite(h, tm);
-        }
-        lm.edge_halfedges.push_back(he);
-        lm.edge_vertices.push_back({a, b});
-      }
-      lm.face_edges[f][j] = e;
-    }
+    for (int j = 0; j < 3; ++j, h = next(h, tm))
+      lm.face_edges[f][std::size_t(j)] = add_edge(h);
   }
 
   // 3. One-ring closure of the model vertices: every incident face (for eq. 3).
-  std::vector<int> counts(lm.number_of_model_vertices + 1, 0);
-  std::vector<std::pair<int, int>> incidences; // (model vertex, face)
-  incidences.reserve(3 * lm.number_of_model_faces);
-  if (whole_mesh) {
-    for (std::size_t f = 0; f < lm.face_handles.size(); ++f)
-      for (int v : lm.face_vertices[f])
-        incidences.emplace_back(v, int(f));
-  } else {
-    for (std::size_t v = 0; v < lm.number_of_model_vertices; ++v) {
+  if (!whole_mesh) {
+    for (std::size_t v = 0; v < lm.number_of_model_vertices; ++v)
       for (halfedge_descriptor h :
            halfedges_around_target(halfedge(lm.vertex_handles[v], tm), tm)) {
         const face_descriptor f = face(h, tm);
-        if (f == boost::graph_traits<TriangleMesh>::null_face())
-          continue;
-        add_face(f);
-        incidences.emplace_back(int(v), face_ids.find(get(fim, f)));
+        if (f != boost::graph_traits<TriangleMesh>::null_face())
+          add_face(f);
       }
-    }
+    lm.face_summation_order.resize(lm.face_handles.size());
+    for (std::size_t f = 0; f < lm.face_handles.size(); ++f)
+      lm.face_summation_order[f] = int(f);
+    std::sort(lm.face_summation_order.begin(), lm.face_summation_order.end(), [&](int f, int g) {
+      return lm.face_indices[std::size_t(f)] < lm.face_indices[std::size_t(g)];
+    });
   }
-  for (const auto& vf : incidences)
-    ++counts[std::size_t(vf.first) + 1];
-  for (std::size_t v = 0; v < lm.number_of_model_vertices; ++v)
-    counts[v + 1] += counts[v];
-  lm.vertex_face_begin = counts;
-  lm.vertex_faces.assign(incidences.size(), 0);
-  for (const auto& vf : incidences)
-    lm.vertex_faces[std::size_t(counts[std::size_t(vf.first)]++)] = vf.second;
-  // Normals are sums over these lists: order them by face index, as for the whole mesh, so
-  // that a model on a face range agrees bit for bit with the whole mesh's model.
-  if (!whole_mesh)
-    for (std::size_t v = 0; v < lm.number_of_model_vertices; ++v)
-      std::sort(lm.vertex_faces.begin() + lm.vertex_face_begin[v],
-                lm.vertex_faces.begin() + lm.vertex_face_begin[v + 1], [&](int f, int g) {
-                  return lm.face_indices[std::size_t(f)] < lm.face_indices[std::size_t(g)];
-                });
+  lm.mesh = &tm;
+  lm.face_ids = std::move(face_ids);
+  lm.face_index = [fim](face_descriptor f) { return std::size_t(get(fim, f)); };
 }
 
 } // namespace internal

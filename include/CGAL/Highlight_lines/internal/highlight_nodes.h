@@ -36,22 +36,15 @@ struct Raw_node
   std::array<double, 3> point{};
 };
 
-// The interior nodes of one edge: levels first_level .. first_level + count - 1, ascending,
-// with node ids first_node .. first_node + count - 1.
-struct Edge_nodes
-{
-  int first_node = 0;
-  int count = 0;
-  long long first_level = 0;
-  bool skipped = false; // more levels than allowed, or d undefined/out of range at an end
-
-  int node_at_level(long long m) const { return first_node + int(m - first_level); }
-};
-
 struct Highlight_nodes
 {
+  static constexpr int no_node = -1; // an edge with no node inside
+  static constexpr int capped = -2;  // an edge with more levels inside than allowed
+
   std::vector<Raw_node> nodes;
-  std::vector<Edge_nodes> edges;
+  // Per edge: the id of its node of lowest level, or no_node, or capped. The nodes of an
+  // edge have consecutive ids, by increasing level from first_interior_level().
+  std::vector<int> edge_first_node;
   std::vector<int> vertex_node; // per model vertex: node id or -1
   std::size_t number_of_capped_edges = 0;
 };
@@ -60,6 +53,20 @@ struct Highlight_nodes
 inline bool edge_is_usable(const Vertex_level& a, const Vertex_level& b)
 {
   return a.defined() && b.defined() && a.normal_side == b.normal_side;
+}
+
+// The lowest level strictly inside the edge, within the window.
+inline long long first_interior_level(const Vertex_level& a, const Vertex_level& b,
+                                      const Level_window& window)
+{
+  return (std::max)((std::min)(a.level, b.level) + 1, window.lowest);
+}
+
+// The id of the node of level m inside edge e (which must carry one).
+inline int node_on_edge(const Highlight_nodes& hn, int e, const Vertex_level& a,
+                        const Vertex_level& b, const Level_window& window, long long m)
+{
+  return hn.edge_first_node[std::size_t(e)] + int(m - first_interior_level(a, b, window));
 }
 
 // Eq. 4 (corrected): on edge (V1, V2) with d1 != d2, a node for every m with m·s strictly
@@ -72,52 +79,48 @@ void compute_highlight_nodes(const Local_mesh<TriangleMesh>& lm,
 {
   const std::size_t ne = lm.edge_vertices.size();
   out.nodes.clear();
-  out.edges.assign(ne, Edge_nodes());
+  out.edge_first_node.assign(ne, Highlight_nodes::no_node);
   out.number_of_capped_edges = 0;
 
   int next_id = 0;
   for (std::size_t e = 0; e < ne; ++e) {
-    Edge_nodes& en = out.edges[e];
     const Vertex_level& a = levels[std::size_t(lm.edge_vertices[e][0])];
     const Vertex_level& b = levels[std::size_t(lm.edge_vertices[e][1])];
-    if (!edge_is_usable(a, b)) {
-      en.skipped = true;
-      continue;
-    }
-    const bool a_is_lower = a.level <= b.level;
-    const Vertex_level& lo = a_is_lower ? a : b;
-    const Vertex_level& hi = a_is_lower ? b : a;
-    // Levels strictly between: (lo.level, hi.level], minus hi.level when hi lies on it.
-    long long first = lo.level + 1, last = hi.on_level ? hi.level - 1 : hi.level;
-    first = (std::max)(first, window.lowest);
-    last = (std::min)(last, window.highest);
+    if (a.level == b.level || !edge_is_usable(a, b))
+      continue; // the common case first: no level strictly inside
+    const Vertex_level& hi = a.level < b.level ? b : a;
+    // Levels strictly inside: (lo.level, hi.level], minus hi.level when hi lies on it.
+    const long long first = first_interior_level(a, b, window);
+    const long long last = (std::min)(hi.on_level ? hi.level - 1 : hi.level, window.highest);
     if (last < first)
       continue;
     if (std::size_t(last - first + 1) > window.max_levels_per_edge) {
-      en.skipped = true;
+      out.edge_first_node[e] = Highlight_nodes::capped;
       ++out.number_of_capped_edges;
       continue;
     }
-    en.first_node = next_id;
-    en.first_level = first;
-    en.count = int(last - first + 1);
-    next_id += en.count;
+    out.edge_first_node[e] = next_id;
+    next_id += int(last - first + 1);
   }
 
   out.nodes.resize(std::size_t(next_id));
   for (std::size_t e = 0; e < ne; ++e) {
-    const Edge_nodes& en = out.edges[e];
-    if (en.count == 0)
+    if (out.edge_first_node[e] < 0)
       continue;
     const int va = lm.edge_vertices[e][0], vb = lm.edge_vertices[e][1];
-    const double da = levels[std::size_t(va)].distance, db = levels[std::size_t(vb)].distance;
+    const Vertex_level& a = levels[std::size_t(va)];
+    const Vertex_level& b = levels[std::size_t(vb)];
+    const double da = a.distance, db = b.distance;
     const double* pa = lm.point(va);
     const double* pb = lm.point(vb);
-    for (int i = 0; i < en.count; ++i) {
-      Raw_node& node = out.nodes[std::size_t(en.first_node + i)];
+    const long long first = first_interior_level(a, b, window);
+    const Vertex_level& hi = a.level < b.level ? b : a;
+    const long long last = (std::min)(hi.on_level ? hi.level - 1 : hi.level, window.highest);
+    for (long long m = first; m <= last; ++m) {
+      Raw_node& node = out.nodes[std::size_t(out.edge_first_node[e] + int(m - first))];
       node.edge = int(e);
-      node.level = en.first_level + i;
-      const double t = db != da ? (double(node.level) * spacing - da) / (db - da) : 0.5;
+      node.level = m;
+      const double t = db != da ? (double(m) * spacing - da) / (db - da) : 0.5;
       node.parameter = std::min(1.0, std::max(0.0, t)); // rounding must not leave the edge
       for (int k = 0; k < 3; ++k)
         node.point[std::size_t(k)] = pa[k] + node.parameter * (pb[k] - pa[k]);

@@ -48,8 +48,9 @@ void connect_highlight_nodes(const Local_mesh<TriangleMesh>& lm,
       ++out.faces_across_poles;
       continue;
     }
-    if (hn.edges[std::size_t(fe[0])].skipped || hn.edges[std::size_t(fe[1])].skipped ||
-        hn.edges[std::size_t(fe[2])].skipped) {
+    if (hn.edge_first_node[std::size_t(fe[0])] == Highlight_nodes::capped ||
+        hn.edge_first_node[std::size_t(fe[1])] == Highlight_nodes::capped ||
+        hn.edge_first_node[std::size_t(fe[2])] == Highlight_nodes::capped) {
       ++out.faces_with_capped_edges;
       continue;
     }
@@ -57,6 +58,10 @@ void connect_highlight_nodes(const Local_mesh<TriangleMesh>& lm,
         (std::max)(std::min({l[0]->level, l[1]->level, l[2]->level}), window.lowest);
     const long long highest =
         (std::min)(std::max({l[0]->level, l[1]->level, l[2]->level}), window.highest);
+    // Face edge j joins corners j and j + 1.
+    auto node_on_face_edge = [&](int j, long long m) {
+      return node_on_edge(hn, fe[std::size_t(j)], *l[j], *l[(j + 1) % 3], window, m);
+    };
     for (long long m = lowest; m <= highest; ++m) {
       const int r[3] = {l[0]->compare_to_level(m), l[1]->compare_to_level(m),
                         l[2]->compare_to_level(m)};
@@ -66,17 +71,14 @@ void connect_highlight_nodes(const Local_mesh<TriangleMesh>& lm,
           continue;
         // The lone corner i is on one side, the other two on the other side.
         const int i = r[0] == r[1] ? 2 : (r[0] == r[2] ? 1 : 0);
-        const Edge_nodes& e_in = hn.edges[std::size_t(fe[std::size_t((i + 2) % 3)])];
-        const Edge_nodes& e_out = hn.edges[std::size_t(fe[std::size_t(i)])];
-        out.segments.push_back({e_in.node_at_level(m), e_out.node_at_level(m)});
+        out.segments.push_back({node_on_face_edge((i + 2) % 3, m), node_on_face_edge(i, m)});
       } else if (on == 1) {
         const int i = r[0] == 0 ? 0 : (r[1] == 0 ? 1 : 2);
         if (r[(i + 1) % 3] * r[(i + 2) % 3] >= 0)
           continue; // the level only touches the triangle at corner i
-        const Edge_nodes& opposite = hn.edges[std::size_t(fe[std::size_t((i + 1) % 3)])];
         CGAL_assertion(hn.vertex_node[std::size_t(fv[std::size_t(i)])] >= 0);
         out.segments.push_back(
-            {hn.vertex_node[std::size_t(fv[std::size_t(i)])], opposite.node_at_level(m)});
+            {hn.vertex_node[std::size_t(fv[std::size_t(i)])], node_on_face_edge((i + 1) % 3, m)});
       }
       // on >= 2: highlight edges, below.
     }

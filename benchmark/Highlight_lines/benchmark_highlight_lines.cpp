@@ -1,0 +1,124 @@
+// Speed of the highlight line model on a mesh of over a million faces, as ratios to CGAL's
+// Polygon_mesh_processing::compute_vertex_normals on the same mesh, measured in the same run
+// (any highlight computation must at least compute normals).
+//
+// Counters: `x_normals` = time of the benchmark / time of compute_vertex_normals.
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Highlight_lines/Highlight_line_sweeper.h>
+#include <CGAL/Highlight_lines/default_light_setup.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/compute_highlight_lines.h>
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <iostream>
+#include <memory>
+#include <string>
+
+namespace {
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+namespace HL = CGAL::Highlight_lines;
+
+// The bundled beetle, Loop-subdivided three times: 38,656 x 64 = 2,473,984 faces.
+const Mesh& big_mesh()
+{
+  static std::unique_ptr<Mesh> mesh;
+  if (!mesh) {
+    mesh = std::make_unique<Mesh>();
+    const std::string path = std::string(HIGHLIGHT_LINES_DATA_DIR) + "/beetle.off";
+    if (!CGAL::IO::read_polygon_mesh(path, *mesh)) {
+      std::cerr << "cannot read " << path << "\n";
+      std::exit(1);
+    }
+    CGAL::Subdivision_method_3::Loop_subdivision(*mesh, CGAL::parameters::number_of_iterations(3));
+  }
+  return *mesh;
+}
+
+double seconds_of_compute_vertex_normals()
+{
+  static double seconds = 0;
+  if (seconds == 0) {
+    Mesh mesh = big_mesh();
+    auto normals = mesh.add_property_map<Mesh::Vertex_index, K::Vector_3>("v:bench_normal").first;
+    double best = 1e300;
+    for (int run = 0; run < 5; ++run) {
+      const auto start = std::chrono::steady_clock::now();
+      CGAL::Polygon_mesh_processing::compute_vertex_normals(mesh, normals);
+      best = (std::min)(
+          best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+    seconds = best;
+  }
+  return seconds;
+}
+
+void report(benchmark::State& state, double seconds_per_iteration)
+{
+  state.counters["faces"] = double(num_faces(big_mesh()));
+  state.counters["x_normals"] = seconds_per_iteration / seconds_of_compute_vertex_normals();
+}
+
+void BM_compute_vertex_normals(benchmark::State& state)
+{
+  Mesh mesh = big_mesh();
+  auto normals = mesh.add_property_map<Mesh::Vertex_index, K::Vector_3>("v:n").first;
+  double total = 0;
+  for (auto _ : state) {
+    const auto start = std::chrono::steady_clock::now();
+    CGAL::Polygon_mesh_processing::compute_vertex_normals(mesh, normals);
+    total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  report(state, total / double(state.iterations()));
+}
+
+// The whole model from scratch: flat copy, normals (eq. 3), classification, nodes, lines.
+void BM_compute_highlight_lines(benchmark::State& state)
+{
+  const Mesh& mesh = big_mesh();
+  const auto lights = HL::default_light_setup(mesh);
+  double total = 0;
+  std::size_t nodes = 0;
+  for (auto _ : state) {
+    const auto start = std::chrono::steady_clock::now();
+    const auto model = CGAL::compute_highlight_lines(mesh, lights, CGAL::Emptyset_iterator());
+    total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    nodes = model.nodes().size();
+  }
+  state.counters["nodes"] = double(nodes);
+  report(state, total / double(state.iterations()));
+}
+
+// A sweep step: lights moved, everything independent of them cached in the sweeper.
+void BM_sweep_update(benchmark::State& state)
+{
+  const Mesh& mesh = big_mesh();
+  const auto lights = HL::default_light_setup(mesh);
+  const HL::Highlight_line_sweeper<Mesh> sweeper(mesh);
+  double total = 0;
+  int step = 0;
+  for (auto _ : state) {
+    const auto moved =
+        lights.translated(lights.index_direction() * (lights.spacing() * 0.1 * (++step % 10)));
+    const auto start = std::chrono::steady_clock::now();
+    const auto model = sweeper.compute(moved);
+    total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    benchmark::DoNotOptimize(model.nodes().data());
+  }
+  report(state, total / double(state.iterations()));
+}
+
+BENCHMARK(BM_compute_vertex_normals)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_compute_highlight_lines)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_sweep_update)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+} // namespace
+
+BENCHMARK_MAIN();
