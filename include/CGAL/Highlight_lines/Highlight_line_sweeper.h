@@ -123,6 +123,10 @@ public:
       than `n` nodes (it crosses more than `n` lights: its normals turn almost parallel to
       the light plane) is skipped with its faces and counted in
       `Model::number_of_skipped_edges()`. Default: 256.
+    - `Highlight_lines::parameters::facing_side_only(true)`: only the vertices whose normal
+      points towards the light plane (`Z·N > 0`) get highlight lines, as a real reflection
+      would show them; the paper's definition (the default, `false`) uses the whole normal
+      line and also images the lights on the side turned away from them.
   */
   template <typename NamedParameters = CGAL::parameters::Default_named_parameters>
   Model compute(const Lights& lights,
@@ -143,6 +147,11 @@ public:
     window.max_levels_per_edge = std::size_t(cap);
 
     classify(lights, levels_);
+    const bool facing_side_only =
+        choose_parameter(get_parameter(np, internal_np::facing_side_only), false);
+    if (facing_side_only)
+      for (internal::Vertex_level& level : levels_)
+        level.turned_away = level.normal_side < 0;
     internal::Highlight_nodes nodes;
     internal::compute_highlight_nodes(mesh_, levels_, lights.spacing_value(), window, nodes);
     internal::Highlight_segments segments;

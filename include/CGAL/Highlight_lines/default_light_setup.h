@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -112,6 +113,45 @@ default_light_setup(const TriangleMesh& tm,
                         "flat mesh parallel to the light plane); give a light setup instead");
   return Light_setup<Kernel>(unit.base_point(), unit.light_direction(), unit.plane_normal(),
                              spread / lines);
+}
+
+/*!
+\ingroup PkgHighlightLinesRef
+
+The range of light indices `[lo, hi]` whose highlight lines cover the central 90 % of the
+surface facing the light plane (the 5 % and 95 % quantiles of the highlight distance values of
+the vertices with `Z·N > 0`). Passed as `Highlight_lines::parameters::level_range`, it keeps
+lines off the regions where the normals turn parallel to the light plane and the lines crowd,
+as a light tunnel with a finite number of tubes would.
+
+\param tm the mesh
+\param lights the light setup
+\param np an optional sequence of named parameters among `vertex_point_map` and
+`Highlight_lines::parameters::face_range`.
+
+\throws Invalid_input if no vertex faces the light plane.
+*/
+template <typename TriangleMesh, typename GeomTraits,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+std::pair<long long, long long>
+default_level_range(const TriangleMesh& tm, const Light_setup<GeomTraits>& lights,
+                    const NamedParameters& np = CGAL::parameters::default_values())
+{
+  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type Vertex_point_map;
+  const Highlight_line_sweeper<TriangleMesh, Vertex_point_map, GeomTraits> sweeper(tm, np);
+  std::vector<internal::Vertex_level> levels;
+  sweeper.classify(lights, levels);
+  std::vector<double> d;
+  for (const internal::Vertex_level& level : levels)
+    if (level.normal_side > 0 && !level.out_of_range)
+      d.push_back(level.distance);
+  if (d.empty())
+    throw Invalid_input(Invalid_input::Problem::INVALID_PARAMETER,
+                        "default_level_range(): no vertex faces the light plane");
+  std::sort(d.begin(), d.end());
+  const double s = lights.spacing_value();
+  return {static_cast<long long>(std::floor(d[std::size_t(0.05 * double(d.size() - 1))] / s)),
+          static_cast<long long>(std::ceil(d[std::size_t(0.95 * double(d.size() - 1))] / s))};
 }
 
 } // namespace Highlight_lines

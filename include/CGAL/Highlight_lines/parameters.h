@@ -17,6 +17,7 @@ enum face_range_t { face_range };
 enum level_range_t { level_range };
 enum max_levels_per_edge_t { max_levels_per_edge };
 enum number_of_lines_t { number_of_lines };
+enum facing_side_only_t { facing_side_only };
 } // namespace internal_np
 /// \endcond
 
@@ -66,6 +67,7 @@ CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(face_range_t, face_range)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(level_range_t, level_range)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(max_levels_per_edge_t, max_levels_per_edge)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(number_of_lines_t, number_of_lines)
+CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(facing_side_only_t, facing_side_only)
 
 #undef CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER
 

@@ -29,9 +29,10 @@ struct Vertex_level
   signed char normal_side = 0; // sign of Z·Ñ; 0: the normal line is parallel to S, d undefined
   bool on_level = false;       // d == k·s exactly
   bool out_of_range = false;   // |d/s| >= 2^50: normal almost parallel to S, levels unusable
+  bool turned_away = false;    // Z·Ñ < 0 and only the side facing the lights is wanted
   double distance = 0;         // d in double (exactly k·s when on_level)
 
-  bool defined() const { return normal_side != 0 && !out_of_range; }
+  bool defined() const { return normal_side != 0 && !out_of_range && !turned_away; }
 
   // Sign of d - m·s, for a defined vertex.
   int compare_to_level(long long m) const

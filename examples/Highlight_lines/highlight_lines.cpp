@@ -1,0 +1,239 @@
+// Computes the highlight line model of a triangle mesh and writes it as CGAL polylines and as a
+// picture of the shaded mesh with its highlight lines.
+//
+//   highlight_lines [mesh.off|.obj|.ply] [options]
+//
+// With no mesh, the bundled VW Beetle body (data/beetle.off) is used. Run with --help for the
+// options; with no light options, a light tunnel is placed above the mesh automatically
+// (CGAL::Highlight_lines::default_light_setup()).
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Highlight_lines/default_light_setup.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/compute_highlight_lines.h>
+
+#include "highlight_picture.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+namespace HL = CGAL::Highlight_lines;
+namespace HLP = CGAL::Highlight_lines::parameters;
+
+namespace {
+
+const char* usage =
+    "usage: highlight_lines [MESH] [options]\n"
+    "\n"
+    "Computes the highlight lines of a triangle mesh (OFF, OBJ or PLY) for a row of parallel\n"
+    "tube lights, and writes PREFIX.polylines.txt (CGAL polylines) and PREFIX.png.\n"
+    "MESH defaults to the bundled VW Beetle body.\n"
+    "\n"
+    "options:\n"
+    "  --out PREFIX            output prefix (default: highlight_lines)\n"
+    "  --lines N               with the automatic light setup: about N lights across the\n"
+    "                          central part of the surface (default 40)\n"
+    "  --base X Y Z            a point of the base light A0     } all four give the light\n"
+    "  --direction X Y Z       the direction H of the lights    } setup explicitly; H must be\n"
+    "  --normal X Y Z          the normal Z of the light plane  } perpendicular to Z\n"
+    "  --spacing S             the distance between lights      }\n"
+    "  --levels LO HI          only the lights with index in [LO, HI]\n"
+    "  --view AZIMUTH ELEVATION  viewing direction in degrees around the light-plane normal\n"
+    "                          (default 35 30)\n"
+    "  --size W H              picture size in pixels (default 1600 1000)\n"
+    "  --help                  this text\n";
+
+[[noreturn]] void fail(const std::string& message)
+{
+  std::cerr << "highlight_lines: " << message << "\n(see --help)\n";
+  std::exit(2);
+}
+
+double number(int& i, int argc, char** argv)
+{
+  if (++i >= argc)
+    fail(std::string("missing value after ") + argv[i - 1]);
+  char* end = nullptr;
+  const double value = std::strtod(argv[i], &end);
+  if (end == argv[i] || *end != '\0')
+    fail(std::string("not a number: ") + argv[i]);
+  return value;
+}
+
+K::Vector_3 vector3(int& i, int argc, char** argv)
+{
+  const double x = number(i, argc, argv), y = number(i, argc, argv), z = number(i, argc, argv);
+  return K::Vector_3(x, y, z);
+}
+
+struct Options
+{
+  std::string mesh = std::string(HIGHLIGHT_LINES_DATA_DIR) + "/beetle.off";
+  std::string out = "highlight_lines";
+  int lines = 40;
+  std::optional<K::Vector_3> base, direction, normal;
+  std::optional<double> spacing;
+  std::optional<std::pair<long long, long long>> levels;
+  double azimuth = 35, elevation = 30;
+  int width = 1600, height = 1000;
+};
+
+Options parse(int argc, char** argv)
+{
+  Options o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--help" || a == "-h") {
+      std::cout << usage;
+      std::exit(0);
+    } else if (a == "--out") {
+      if (++i >= argc)
+        fail("missing value after --out");
+      o.out = argv[i];
+    } else if (a == "--lines")
+      o.lines = int(number(i, argc, argv));
+    else if (a == "--base")
+      o.base = vector3(i, argc, argv);
+    else if (a == "--direction")
+      o.direction = vector3(i, argc, argv);
+    else if (a == "--normal")
+      o.normal = vector3(i, argc, argv);
+    else if (a == "--spacing")
+      o.spacing = number(i, argc, argv);
+    else if (a == "--levels") {
+      const double lo = number(i, argc, argv), hi = number(i, argc, argv);
+      o.levels = std::make_pair((long long)lo, (long long)hi);
+    } else if (a == "--view") {
+      o.azimuth = number(i, argc, argv);
+      o.elevation = number(i, argc, argv);
+    } else if (a == "--size") {
+      o.width = int(number(i, argc, argv));
+      o.height = int(number(i, argc, argv));
+    } else if (!a.empty() && a[0] == '-')
+      fail("unknown option " + a);
+    else
+      o.mesh = a;
+  }
+  const int given = bool(o.base) + bool(o.direction) + bool(o.normal) + bool(o.spacing);
+  if (given != 0 && given != 4)
+    fail("--base, --direction, --normal and --spacing go together");
+  if (o.width < 16 || o.height < 16 || o.width > 10000 || o.height > 10000)
+    fail("--size must be between 16 and 10000 pixels");
+  return o;
+}
+
+highlight_picture::Point3 to_array(const K::Point_3& p)
+{
+  return {p.x(), p.y(), p.z()};
+}
+highlight_picture::Vector3 to_array(const K::Vector_3& v)
+{
+  return {v.x(), v.y(), v.z()};
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  const Options options = parse(argc, argv);
+
+  Mesh mesh;
+  if (!CGAL::IO::read_polygon_mesh(options.mesh, mesh) || is_empty(mesh)) {
+    std::cerr << "highlight_lines: cannot read a polygon mesh from " << options.mesh << "\n";
+    return 1;
+  }
+  std::cout << "mesh " << options.mesh << ": " << num_vertices(mesh) << " vertices, "
+            << num_faces(mesh) << " faces\n";
+
+  try {
+    const HL::Light_setup<K> lights =
+        options.base ? HL::Light_setup<K>(CGAL::ORIGIN + *options.base, *options.direction,
+                                          *options.normal, *options.spacing)
+                     : HL::default_light_setup(mesh, HLP::number_of_lines(options.lines));
+    std::cout << "lights: base " << lights.base_point() << ", direction "
+              << lights.light_direction() << ", plane normal " << lights.plane_normal()
+              << ", spacing " << lights.spacing() << "\n";
+
+    // By default, the lights over the central part of the surface, imaged on the side of
+    // the surface that faces them (as a light tunnel shows them).
+    const std::pair<long long, long long> levels =
+        options.levels ? *options.levels : HL::default_level_range(mesh, lights);
+    std::cout << "light indices " << levels.first << " to " << levels.second << "\n";
+    std::vector<std::vector<K::Point_3>> polylines;
+    const auto model = CGAL::compute_highlight_lines(
+        mesh, lights, std::back_inserter(polylines),
+        HLP::combine(HLP::level_range(levels), HLP::facing_side_only(true)));
+    std::cout << model.lines().size() << " highlight lines through " << model.nodes().size()
+              << " nodes";
+    if (model.number_of_skipped_edges() > 0)
+      std::cout << "; " << model.number_of_skipped_edges()
+                << " edges crossing too many lights were skipped";
+    if (model.number_of_undefined_vertices() > 0)
+      std::cout << "; " << model.number_of_undefined_vertices()
+                << " vertices have normals parallel to the light plane";
+    std::cout << "\n";
+
+    const std::string polylines_path = options.out + ".polylines.txt";
+    std::ofstream file(polylines_path);
+    file.precision(17);
+    for (const auto& polyline : polylines) {
+      file << polyline.size();
+      for (const auto& p : polyline)
+        file << ' ' << p;
+      file << '\n';
+    }
+    if (!file) {
+      std::cerr << "highlight_lines: cannot write " << polylines_path << "\n";
+      return 1;
+    }
+
+    // The picture: the mesh seen from above the light plane's side, lines drawn over it.
+    std::vector<highlight_picture::Point3> points;
+    std::vector<std::array<std::size_t, 3>> triangles;
+    for (auto v : vertices(mesh))
+      points.push_back(to_array(mesh.point(v)));
+    for (auto f : faces(mesh)) {
+      std::array<std::size_t, 3> t{};
+      std::size_t j = 0;
+      for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+        t[j++] = std::size_t(v);
+      triangles.push_back(t);
+    }
+    // Azimuth around the light plane normal Z, measured from the light direction H.
+    const auto z = to_array(lights.plane_normal()), h = to_array(lights.light_direction());
+    const auto w = highlight_picture::detail::cross(z, h);
+    const double a = options.azimuth * M_PI / 180, e = options.elevation * M_PI / 180;
+    highlight_picture::Vector3 view;
+    for (int k = 0; k < 3; ++k)
+      view[k] = -(std::cos(e) * (std::cos(a) * h[k] + std::sin(a) * w[k]) + std::sin(e) * z[k]);
+    const auto camera =
+        highlight_picture::fit_camera(points, view, z, options.width, options.height);
+    highlight_picture::Renderer renderer(options.width, options.height, camera);
+    renderer.draw_mesh(points, triangles);
+    std::vector<std::vector<highlight_picture::Point3>> lines;
+    for (const auto& polyline : polylines) {
+      lines.emplace_back();
+      for (const auto& p : polyline)
+        lines.back().push_back(to_array(p));
+    }
+    renderer.draw_polylines(lines);
+    const std::string picture_path = options.out + ".png";
+    if (!highlight_picture::write_png(picture_path, renderer.image())) {
+      std::cerr << "highlight_lines: cannot write " << picture_path << "\n";
+      return 1;
+    }
+    std::cout << "wrote " << polylines_path << " and " << picture_path << "\n";
+  } catch (const HL::Invalid_input& e) {
+    std::cerr << "highlight_lines: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
