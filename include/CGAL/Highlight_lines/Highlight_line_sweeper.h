@@ -132,32 +132,9 @@ public:
   Model compute(const Lights& lights,
                 const NamedParameters& np = CGAL::parameters::default_values()) const
   {
-    using CGAL::parameters::choose_parameter;
-    using CGAL::parameters::get_parameter;
-    internal::Level_window window;
-    const auto range = choose_parameter(get_parameter(np, internal_np::level_range),
-                                        std::make_pair(window.lowest, window.highest));
-    window.lowest = (std::max)(window.lowest, (long long)(range.first));
-    window.highest = (std::min)(window.highest, (long long)(range.second));
-    const auto cap = choose_parameter(get_parameter(np, internal_np::max_levels_per_edge),
-                                      window.max_levels_per_edge);
-    if (!(cap >= 1))
-      throw Invalid_input(Invalid_input::Problem::INVALID_PARAMETER,
-                          "max_levels_per_edge must be at least 1");
-    window.max_levels_per_edge = std::size_t(cap);
-
-    classify(lights, levels_);
-    const bool facing_side_only =
-        choose_parameter(get_parameter(np, internal_np::facing_side_only), false);
-    if (facing_side_only)
-      for (internal::Vertex_level& level : levels_)
-        level.turned_away = level.normal_side < 0;
-    internal::Highlight_nodes nodes;
-    internal::compute_highlight_nodes(mesh_, levels_, lights.spacing_value(), window, nodes);
-    internal::Highlight_segments segments;
-    internal::connect_highlight_nodes(mesh_, levels_, nodes, window, segments);
-    internal::Traced_lines traced;
-    internal::trace_lines(nodes.nodes, segments.segments, traced);
+    compute_raw(lights, level_window(np), facing_side_only(np), raw_);
+    const internal::Highlight_nodes& nodes = raw_.nodes;
+    const internal::Traced_lines& traced = raw_.lines;
 
     // Nodes that no segment reaches (edges whose faces were all left out, extrema lying
     // exactly on a level) carry no line; they are sorted last and dropped.
@@ -186,11 +163,12 @@ public:
     }
     std::size_t undefined = 0, out_of_range = 0;
     for (std::size_t v = 0; v < mesh_.number_of_model_vertices; ++v) {
-      undefined += levels_[v].normal_side == 0;
-      out_of_range += levels_[v].out_of_range;
+      undefined += raw_.levels[v].normal_side == 0;
+      out_of_range += raw_.levels[v].out_of_range;
     }
-    return Model(lights, std::move(model_nodes), std::move(model_lines), segments.segments.size(),
-                 nodes.number_of_capped_edges, undefined, out_of_range);
+    return Model(lights, std::move(model_nodes), std::move(model_lines),
+                 raw_.segments.segments.size(), nodes.number_of_capped_edges, undefined,
+                 out_of_range);
   }
 
   /// Number of faces the model is computed on.
@@ -201,8 +179,59 @@ public:
   /// \cond SKIP_IN_MANUAL
   const internal::Local_mesh<TriangleMesh>& local_mesh() const { return mesh_; }
   const internal::Vertex_normals& vertex_normals() const { return normals_; }
-  const std::vector<internal::Vertex_level>& last_vertex_levels() const { return levels_; }
+  const std::vector<internal::Vertex_level>& last_vertex_levels() const { return raw_.levels; }
   const internal::Classification_statistics& statistics() const { return statistics_; }
+
+  // The model in local ids, as the fairing works with it.
+  struct Raw_model
+  {
+    std::vector<internal::Vertex_level> levels;
+    internal::Highlight_nodes nodes;
+    internal::Highlight_segments segments;
+    internal::Traced_lines lines; // node ids in lines are canonical ids: see node()
+    const internal::Raw_node& node(std::size_t canonical_id) const
+    {
+      return nodes.nodes[std::size_t(lines.new_order[canonical_id])];
+    }
+  };
+
+  void compute_raw(const Lights& lights, const internal::Level_window& window,
+                   bool facing_side_only, Raw_model& out) const
+  {
+    classify(lights, out.levels);
+    if (facing_side_only)
+      for (internal::Vertex_level& level : out.levels)
+        level.turned_away = level.normal_side < 0;
+    internal::compute_highlight_nodes(mesh_, out.levels, lights.spacing_value(), window, out.nodes);
+    internal::connect_highlight_nodes(mesh_, out.levels, out.nodes, window, out.segments);
+    internal::trace_lines(out.nodes.nodes, out.segments.segments, out.lines);
+  }
+
+  template <typename NamedParameters>
+  static internal::Level_window level_window(const NamedParameters& np)
+  {
+    using CGAL::parameters::choose_parameter;
+    using CGAL::parameters::get_parameter;
+    internal::Level_window window;
+    const auto range = choose_parameter(get_parameter(np, internal_np::level_range),
+                                        std::make_pair(window.lowest, window.highest));
+    window.lowest = (std::max)(window.lowest, (long long)(range.first));
+    window.highest = (std::min)(window.highest, (long long)(range.second));
+    const auto cap = choose_parameter(get_parameter(np, internal_np::max_levels_per_edge),
+                                      window.max_levels_per_edge);
+    if (!(cap >= 1))
+      throw Invalid_input(Invalid_input::Problem::INVALID_PARAMETER,
+                          "max_levels_per_edge must be at least 1");
+    window.max_levels_per_edge = std::size_t(cap);
+    return window;
+  }
+
+  template <typename NamedParameters>
+  static bool facing_side_only(const NamedParameters& np)
+  {
+    return CGAL::parameters::choose_parameter(
+        CGAL::parameters::get_parameter(np, internal_np::facing_side_only), false);
+  }
 
   void classify(const Lights& lights, std::vector<internal::Vertex_level>& levels) const
   {
@@ -222,7 +251,7 @@ private:
   VertexPointMap vpm_;
   internal::Local_mesh<TriangleMesh> mesh_;
   internal::Vertex_normals normals_;
-  mutable std::vector<internal::Vertex_level> levels_;
+  mutable Raw_model raw_; // reused across sweeps: no reallocation, no page faults
   mutable internal::Classification_statistics statistics_;
 };
 
