@@ -1,0 +1,160 @@
+// Copyright (c) 2026 The Highlight_lines package authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_NODE_JACOBIAN_H
+#define CGAL_HIGHLIGHT_LINES_INTERNAL_NODE_JACOBIAN_H
+
+#include <CGAL/Highlight_lines/internal/Local_mesh.h>
+#include <CGAL/Highlight_lines/internal/fairing_region.h>
+#include <CGAL/Highlight_lines/internal/highlight_nodes.h>
+#include <CGAL/Highlight_lines/internal/vertex_normals.h>
+
+#include <array>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Highlight_lines {
+namespace internal {
+
+typedef std::array<double, 3> Vec3;
+
+inline Vec3 cross3(const Vec3& a, const Vec3& b)
+{
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+inline double dot3(const Vec3& a, const Vec3& b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+// Derivatives of node positions with respect to the normal displacements x_k of the movable
+// vertices (V_k -> V_k + x_k N_k), for the Gauss–Newton form of q_diff (SPEC §4).
+//
+// A node on edge (V1, V2) at level m sits at Q = V1 + t (V2 - V1), t = (m s - d1)/(d2 - d1)
+// (eq. 13). d of a vertex (eq. 1) depends on its position and, through Ñ (eq. 3), on its
+// one-ring, so x_k moves Q when k is V1, V2 or a neighbour of either.
+class Node_jacobian
+{
+public:
+  typedef std::vector<std::pair<int, Vec3>> Row; // (variable, dQ/dx_variable)
+
+  template <typename TriangleMesh>
+  Node_jacobian(const Local_mesh<TriangleMesh>& lm, const Fairing_region& region,
+                const Vertex_normals& vn, const std::vector<Vec3>& directions, const Vec3& a,
+                const Vec3& h, const Vec3& z)
+      : region_(region), directions_(directions), a_(a), h_(h), z_(z)
+  {
+    point_ = [&lm](int v) {
+      const double* p = lm.point(v);
+      return Vec3{p[0], p[1], p[2]};
+    };
+    corners_ = [&lm](int f) { return lm.face_vertices[std::size_t(f)]; };
+    normal_ = [&vn](int v) {
+      const double* n = &vn.normal[3 * std::size_t(v)];
+      return Vec3{n[0], n[1], n[2]};
+    };
+  }
+
+  // d(d_v)/dx_k for every variable k that moves d_v.
+  std::vector<std::pair<int, double>> distance_gradient(int v) const
+  {
+    // dÑ/dx_k = sum over faces around v containing k of N_k x (p_next(k) - p_prev(k)).
+    std::vector<std::pair<int, Vec3>> dn;
+    for (int i = region_.vertex_face_begin[std::size_t(v)];
+         i < region_.vertex_face_begin[std::size_t(v) + 1]; ++i) {
+      const std::array<int, 3> c = corners_(region_.vertex_faces[std::size_t(i)]);
+      for (int j = 0; j < 3; ++j) {
+        const int var = region_.variable[std::size_t(c[std::size_t(j)])];
+        if (var < 0)
+          continue;
+        const Vec3 p_next = point_(c[std::size_t((j + 1) % 3)]),
+                   p_prev = point_(c[std::size_t((j + 2) % 3)]);
+        const Vec3 d =
+            cross3(directions_[std::size_t(var)],
+                   {p_next[0] - p_prev[0], p_next[1] - p_prev[1], p_next[2] - p_prev[2]});
+        auto it =
+            std::find_if(dn.begin(), dn.end(), [var](const auto& e) { return e.first == var; });
+        if (it == dn.end())
+          dn.emplace_back(var, d);
+        else
+          for (int k = 0; k < 3; ++k)
+            it->second[std::size_t(k)] += d[std::size_t(k)];
+      }
+    }
+    const Vec3 p = point_(v), n = normal_(v);
+    const Vec3 x = cross3({p[0] - a_[0], p[1] - a_[1], p[2] - a_[2]}, h_);
+    const double num = dot3(x, n), den = dot3(z_, n);
+    std::vector<std::pair<int, double>> result;
+    const int own = region_.variable[std::size_t(v)];
+    for (const auto& e : dn) {
+      double dnum = dot3(x, e.second);
+      if (e.first == own)
+        dnum += dot3(cross3(directions_[std::size_t(own)], h_), n);
+      const double dden = dot3(z_, e.second);
+      result.emplace_back(e.first, (dnum * den - num * dden) / (den * den));
+    }
+    if (own >= 0 && dn.empty()) // a vertex moved without any face around: only its position
+      result.emplace_back(own, dot3(cross3(directions_[std::size_t(own)], h_), n) / den);
+    return result;
+  }
+
+  // dQ/dx for a node; `levels` gives the current d values, s the spacing.
+  Row node_row(const Raw_node& node, const std::vector<std::array<int, 2>>& edge_vertices,
+               const std::vector<Vertex_level>& levels, double s) const
+  {
+    Row row;
+    auto add = [&row](int var, const Vec3& d) {
+      auto it =
+          std::find_if(row.begin(), row.end(), [var](const auto& e) { return e.first == var; });
+      if (it == row.end())
+        row.emplace_back(var, d);
+      else
+        for (int k = 0; k < 3; ++k)
+          it->second[std::size_t(k)] += d[std::size_t(k)];
+    };
+    if (node.vertex >= 0) { // eq. 13 for a node on a vertex: the vertex's new position
+      const int var = region_.variable[std::size_t(node.vertex)];
+      if (var >= 0)
+        add(var, directions_[std::size_t(var)]);
+      return row;
+    }
+    const int va = edge_vertices[std::size_t(node.edge)][0],
+              vb = edge_vertices[std::size_t(node.edge)][1];
+    const double da = levels[std::size_t(va)].distance, db = levels[std::size_t(vb)].distance;
+    const double D = db - da;
+    if (D == 0)
+      return row;
+    const double t = (double(node.level) * s - da) / D;
+    const Vec3 pa = point_(va), pb = point_(vb);
+    const Vec3 edge{pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
+    for (int end = 0; end < 2; ++end) {
+      const int v = end == 0 ? va : vb;
+      const int var = region_.variable[std::size_t(v)];
+      const double weight = end == 0 ? 1 - t : t; // dQ/dV
+      if (var >= 0) {
+        const Vec3& u = directions_[std::size_t(var)];
+        add(var, {weight * u[0], weight * u[1], weight * u[2]});
+      }
+      const double dt_dd = end == 0 ? (t - 1) / D : -t / D; // dt/d(d_end)
+      for (const auto& g : distance_gradient(v)) {
+        const double f = dt_dd * g.second;
+        add(g.first, {f * edge[0], f * edge[1], f * edge[2]});
+      }
+    }
+    return row;
+  }
+
+private:
+  const Fairing_region& region_;
+  const std::vector<Vec3>& directions_;
+  Vec3 a_, h_, z_;
+  std::function<Vec3(int)> point_, normal_;
+  std::function<std::array<int, 3>(int)> corners_;
+};
+
+} // namespace internal
+} // namespace Highlight_lines
+} // namespace CGAL
+
+#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_NODE_JACOBIAN_H

@@ -1,0 +1,229 @@
+// Copyright (c) 2026 The Highlight_lines package authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_FAIR_WITH_HIGHLIGHT_LINES_H
+#define CGAL_FAIR_WITH_HIGHLIGHT_LINES_H
+
+#include <CGAL/Highlight_lines/Active_set_box_QP_solver.h>
+#include <CGAL/Highlight_lines/Fairing_report.h>
+#include <CGAL/Highlight_lines/Invalid_input.h>
+#include <CGAL/Highlight_lines/Light_setup.h>
+#include <CGAL/Highlight_lines/parameters.h>
+#include <CGAL/Highlight_lines/internal/fairing.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <functional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+
+namespace Highlight_lines {
+namespace internal {
+
+struct Accept_every_iteration
+{
+  bool operator()(const Fairing_report::Iteration&) const { return true; }
+};
+
+// The region as a set, after checking that it is a non-empty range of faces of `tm`.
+template <typename TriangleMesh, typename FaceRange, typename FaceIndexMap>
+std::set<typename boost::graph_traits<TriangleMesh>::face_descriptor>
+checked_region(const TriangleMesh& tm, const FaceRange& faces_in, FaceIndexMap fim)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  std::set<face_descriptor> all(faces(tm).begin(), faces(tm).end()), region;
+  for (face_descriptor f : faces_in) {
+    if (f == boost::graph_traits<TriangleMesh>::null_face() || all.count(f) == 0)
+      throw Invalid_input(Invalid_input::Problem::FACE_NOT_IN_MESH,
+                          "fair_with_highlight_lines(): the region contains a face that is not "
+                          "a face of the mesh",
+                          f == boost::graph_traits<TriangleMesh>::null_face()
+                              ? Invalid_input::no_element
+                              : std::size_t(get(fim, f)));
+    region.insert(f);
+  }
+  if (region.empty())
+    throw Invalid_input(Invalid_input::Problem::EMPTY_FACE_RANGE,
+                        "fair_with_highlight_lines(): the region is empty");
+  return region;
+}
+
+// The region and `rings` rings of faces around it: where highlight lines are recomputed.
+template <typename TriangleMesh, typename FaceSet>
+std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>
+neighborhood(const TriangleMesh& tm, const FaceSet& region, int rings)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  std::set<face_descriptor> result(region.begin(), region.end());
+  std::vector<face_descriptor> front(region.begin(), region.end());
+  for (int ring = 0; ring < rings; ++ring) {
+    std::vector<face_descriptor> next;
+    for (face_descriptor f : front)
+      for (auto v : vertices_around_face(halfedge(f, tm), tm))
+        for (face_descriptor g : faces_around_target(halfedge(v, tm), tm))
+          if (g != boost::graph_traits<TriangleMesh>::null_face() && result.insert(g).second)
+            next.push_back(g);
+    front.swap(next);
+  }
+  return std::vector<face_descriptor>(result.begin(), result.end());
+}
+
+} // namespace internal
+} // namespace Highlight_lines
+
+/*!
+\ingroup PkgHighlightLinesRef
+
+Fairs a region of a triangle mesh so that the surface becomes fair and its highlight lines
+run smoothly through the region (§3 of the paper, as completed by the package's
+specification).
+
+Only the movable vertices of the region move, each along its normal (see below); everything
+outside their support is left exactly as it was, in particular every vertex outside the region
+with its normal, and every highlight node outside the region. Each iteration minimises
+`F = ω1 q_fair + ω2 q_diff` (eq. 15) under `|x_i| <= ½ min edge length at V_i` (eq. 16) with a
+bound-constrained QP solver, moves the vertices, and recomputes the highlight lines around the
+region; it stops when `max |x_i| / ē < ε` (eq. 17, `ē` the mean edge length in the region) or
+after the iteration bound.
+
+- *Inside the region*: a vertex is inside when all its faces are in the region and it is not
+  on a mesh border; a highlight node is inside when it lies inside an edge whose two faces are
+  in the region, or on a vertex inside. *Movable vertices* are the vertices inside whose
+  neighbours are all inside: the vertices of the region that are not support vertices of any
+  vertex or node outside the region.
+- *Desired highlight lines*: each maximal part of a highlight line inside the region between
+  two delimiting nodes outside it gets an optimized geometric Hermite (OGH) curve, with end
+  tangents estimated from the line outside the region. Where a single OGH segment would loop
+  (`a0 <= 0` or `a1 <= 0`), a two-segment curve is used, and if that fails too the part gets
+  no target (counted in the report). Lines that end inside the region, and loops inside it,
+  get no target.
+- *q_fair* is the discrete Willmore energy of the region with the standard cotangent formula
+  `K = 1/(2A) Σ (cot α + cot β)(V_i − V_j)` (eq. 8 as printed lacks the factor 1/2), weights
+  held fixed during an iteration. *q_diff* is eq. 10–14 in Gauss–Newton form, divided by
+  `area(R)^{3/2}` so that the result commutes with uniform scaling of mesh and lights.
+
+\tparam TriangleMesh a model of `MutableFaceGraph` whose faces are triangles
+\tparam FaceRange a range of `face_descriptor`
+\tparam GeomTraits a model of `Kernel`
+
+\param tm the mesh, modified in place through the vertex point map
+\param region the faces of the region to fair
+\param lights the light setup whose highlight lines are to run smoothly
+\param np an optional sequence of named parameters among:
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{vertex_point_map} \cgalParamDescription{a readable and writable property map of
+the vertex points} \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`} \cgalParamNEnd
+    \cgalParamNBegin{face_index_map} \cgalParamDefault{the internal map, or a dynamic one}
+\cgalParamNEnd \cgalParamNBegin{number_of_iterations} \cgalParamDescription{the iteration bound}
+\cgalParamDefault{50} \cgalParamNEnd \cgalParamNBegin{Highlight_lines::parameters::fairness_weight}
+\cgalParamDescription{ω1} \cgalParamDefault{1} \cgalParamNEnd
+    \cgalParamNBegin{Highlight_lines::parameters::difference_weight} \cgalParamDescription{ω2}
+\cgalParamDefault{1} \cgalParamNEnd
+    \cgalParamNBegin{Highlight_lines::parameters::convergence_threshold} \cgalParamDescription{ε of
+eq. 17} \cgalParamDefault{0.001} \cgalParamNEnd
+    \cgalParamNBegin{Highlight_lines::parameters::qp_solver} \cgalParamDescription{a model of
+`BoxConstrainedQuadraticProgramSolver`, passed with `std::ref`} \cgalParamDefault{a
+`Highlight_lines::Active_set_box_QP_solver`} \cgalParamNEnd
+    \cgalParamNBegin{Highlight_lines::parameters::fairing_visitor} \cgalParamDescription{a callable
+      `bool(const Fairing_report::Iteration&)` called after each iteration; returning `false` stops
+the fairing} \cgalParamDefault{none} \cgalParamNEnd
+    \cgalParamNBegin{Highlight_lines::parameters::neighborhood_rings} \cgalParamDescription{rings of
+faces around the region on which highlight lines are recomputed (the tangents are estimated there)}
+      \cgalParamDefault{3} \cgalParamNEnd
+    \cgalParamNBegin{Highlight_lines::parameters::level_range, max_levels_per_edge}
+\cgalParamDescription{as for `compute_highlight_lines()`} \cgalParamNEnd \cgalNamedParamsEnd
+
+\returns a report of the iterations.
+
+\throws Highlight_lines::Invalid_input for an empty region, a face not of `tm`, a region
+without movable vertex, a non-triangle or degenerate face or a non-finite coordinate around
+the region, or an invalid parameter; the mesh is untouched.
+\throws Highlight_lines::Fairing_failure if the solver fails or no step avoids flipping a
+triangle; the mesh is restored to exactly what it was before the call. Any exception thrown
+by the visitor or the property maps also restores the mesh before it propagates.
+*/
+template <typename TriangleMesh, typename FaceRange, typename GeomTraits,
+          typename NamedParameters = parameters::Default_named_parameters>
+Highlight_lines::Fairing_report
+fair_with_highlight_lines(TriangleMesh& tm, const FaceRange& region,
+                          const Highlight_lines::Light_setup<GeomTraits>& lights,
+                          const NamedParameters& np = parameters::default_values())
+{
+  namespace HL = Highlight_lines;
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using parameters::get_parameter_reference;
+  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::type Vertex_point_map;
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::property_traits<Vertex_point_map>::value_type Point;
+
+  const Vertex_point_map vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
+                                                get_property_map(CGAL::vertex_point, tm));
+  const auto fim = get_initialized_face_index_map(tm, np);
+
+  HL::internal::Fairing_options options;
+  options.fairness_weight =
+      choose_parameter(get_parameter(np, HL::internal_np::fairness_weight), 1.0);
+  options.difference_weight =
+      choose_parameter(get_parameter(np, HL::internal_np::difference_weight), 1.0);
+  options.convergence_threshold =
+      choose_parameter(get_parameter(np, HL::internal_np::convergence_threshold), 0.001);
+  const auto iterations =
+      choose_parameter(get_parameter(np, internal_np::number_of_iterations), 50);
+  options.neighborhood_rings =
+      choose_parameter(get_parameter(np, HL::internal_np::neighborhood_rings), 3);
+  options.window = HL::Highlight_line_sweeper<TriangleMesh>::level_window(np);
+  auto bad = [](const std::string& what) {
+    throw HL::Invalid_input(HL::Invalid_input::Problem::INVALID_PARAMETER,
+                            "fair_with_highlight_lines(): " + what);
+  };
+  if (!(options.fairness_weight >= 0) || !(options.difference_weight >= 0) ||
+      !std::isfinite(options.fairness_weight) || !std::isfinite(options.difference_weight) ||
+      options.fairness_weight + options.difference_weight == 0)
+    bad("the weights must be finite, non-negative and not both zero");
+  if (!(options.convergence_threshold > 0) || !std::isfinite(options.convergence_threshold))
+    bad("the convergence threshold must be a positive number");
+  if (!(iterations >= 1))
+    bad("number_of_iterations must be at least 1");
+  options.max_iterations = std::size_t(iterations);
+  if (!(options.neighborhood_rings >= 2))
+    bad("neighborhood_rings must be at least 2 (tangents need two nodes outside the region)");
+
+  const auto region_set = HL::internal::checked_region(tm, region, fim);
+  const auto neighborhood = HL::internal::neighborhood(tm, region_set, options.neighborhood_rings);
+
+  HL::Active_set_box_QP_solver default_solver;
+  auto& solver =
+      choose_parameter(get_parameter_reference(np, HL::internal_np::qp_solver), default_solver);
+  typedef std::remove_reference_t<decltype(solver)> Solver;
+  const auto visitor = choose_parameter(get_parameter(np, HL::internal_np::fairing_visitor),
+                                        HL::internal::Accept_every_iteration());
+
+  // Everything that can be refused is refused before the mesh is touched.
+  HL::internal::Fairing<TriangleMesh, Vertex_point_map, GeomTraits, Solver> fairing(
+      tm, region_set, neighborhood, vpm, lights, options, solver);
+
+  // Transaction: only movable vertices are ever written; keep them to restore on failure.
+  std::vector<std::pair<vertex_descriptor, Point>> saved;
+  for (int v : fairing.region().movable) {
+    const vertex_descriptor vd = fairing.sweeper().local_mesh().vertex_handles[std::size_t(v)];
+    saved.emplace_back(vd, get(vpm, vd));
+  }
+  try {
+    return fairing.run(std::function<bool(const HL::Fairing_report::Iteration&)>(visitor));
+  } catch (...) {
+    for (const auto& entry : saved)
+      put(vpm, entry.first, entry.second);
+    throw;
+  }
+}
+
+} // namespace CGAL
+
+#endif // CGAL_FAIR_WITH_HIGHLIGHT_LINES_H

@@ -1,0 +1,394 @@
+// fair_with_highlight_lines(): invariants, ground truth, Jacobian, bad input.
+#include "../model/test_meshes.h"
+
+#include <CGAL/Aff_transformation_3.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/compute_highlight_lines.h>
+#include <CGAL/fair_with_highlight_lines.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <random>
+#include <set>
+
+namespace {
+using namespace test;
+namespace HL = CGAL::Highlight_lines;
+namespace HLP = CGAL::Highlight_lines::parameters;
+typedef boost::graph_traits<Surface_mesh>::face_descriptor face_descriptor;
+
+// A car-hood-like height field over [-1, 1]^2, gently curved.
+double hood(double x, double y)
+{
+  return 0.25 * (1 - 0.35 * x * x) - 0.12 * y * y + 0.05 * x * y;
+}
+
+// A smooth dent of depth `depth` and radius `radius` around (cx, cy): (1 - (r/R)^2)^3.
+double dent(double x, double y, double depth, double radius, double cx = 0.1, double cy = -0.05)
+{
+  const double r2 = ((x - cx) * (x - cx) + (y - cy) * (y - cy)) / (radius * radius);
+  return r2 < 1 ? -depth * (1 - r2) * (1 - r2) * (1 - r2) : 0.0;
+}
+
+struct Dented_hood
+{
+  Soup undented, dented;
+  double depth, radius;
+};
+
+// An irregularly triangulated hood (jittered grid), with and without a dent.
+Dented_hood dented_hood(int n = 40, double depth = 0.02, double radius = 0.3, double jitter = 0.3)
+{
+  Dented_hood d{grid(n, 2.0 / n, -1, -1, hood, jitter, 17), {}, depth, radius};
+  d.dented = d.undented;
+  for (Point& p : d.dented.points)
+    p = Point(p.x(), p.y(), p.z() + dent(p.x(), p.y(), depth, radius));
+  return d;
+}
+
+const Lights hood_lights(Point(0, 0, 3), Vector(1, 0, 0), Vector(0, 0, 1), 0.06);
+
+// The faces whose vertices all lie within `radius` of the dent's centre.
+template <typename Mesh>
+std::vector<typename boost::graph_traits<Mesh>::face_descriptor> disk_region(const Mesh& mesh,
+                                                                             double radius)
+{
+  std::vector<typename boost::graph_traits<Mesh>::face_descriptor> region;
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  for (auto f : faces(mesh)) {
+    bool inside = true;
+    for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh)) {
+      const Point p = get(vpm, v);
+      inside = inside &&
+               (p.x() - 0.1) * (p.x() - 0.1) + (p.y() + 0.05) * (p.y() + 0.05) < radius * radius;
+    }
+    if (inside)
+      region.push_back(f);
+  }
+  return region;
+}
+
+std::vector<Point> points_of(const Surface_mesh& mesh)
+{
+  std::vector<Point> points;
+  for (auto v : vertices(mesh))
+    points.push_back(mesh.point(v));
+  return points;
+}
+
+double rms_height_error(const Surface_mesh& mesh, const Soup& truth,
+                        const std::set<std::size_t>& vertices)
+{
+  double sum = 0;
+  for (std::size_t v : vertices) {
+    const Point p = mesh.point(Surface_mesh::Vertex_index(std::uint32_t(v)));
+    const double dz = p.z() - hood(p.x(), p.y());
+    (void)truth;
+    sum += dz * dz;
+  }
+  return std::sqrt(sum / double(vertices.size()));
+}
+
+std::set<std::size_t> movable_vertices(const Surface_mesh& mesh,
+                                       const std::vector<face_descriptor>& region)
+{
+  // A vertex moves iff it and all its neighbours have all faces in the region.
+  std::set<face_descriptor> in(region.begin(), region.end());
+  auto inside = [&](Surface_mesh::Vertex_index v) {
+    if (CGAL::is_border(v, mesh))
+      return false;
+    for (auto f : CGAL::faces_around_target(mesh.halfedge(v), mesh))
+      if (!in.count(f))
+        return false;
+    return true;
+  };
+  std::set<std::size_t> result;
+  for (auto v : vertices(mesh)) {
+    bool ok = inside(v);
+    for (auto w : CGAL::vertices_around_target(mesh.halfedge(v), mesh))
+      ok = ok && inside(w);
+    if (ok)
+      result.insert(std::size_t(v));
+  }
+  return result;
+}
+
+TEST(Fairing, RestoresTheUndentedSurface)
+{
+  const Dented_hood d = dented_hood();
+  Surface_mesh mesh = to_mesh<Surface_mesh>(d.dented);
+  const auto region = disk_region(mesh, 1.5 * d.radius);
+  const auto movable = movable_vertices(mesh, region);
+  const double before = rms_height_error(mesh, d.undented, movable);
+  const HL::Fairing_report report = CGAL::fair_with_highlight_lines(mesh, region, hood_lights);
+  const double after = rms_height_error(mesh, d.undented, movable);
+  EXPECT_EQ(report.number_of_movable_vertices, movable.size());
+  EXPECT_GT(report.number_of_lines_targeted, 5u);
+  EXPECT_GE(report.iterations, 1u);
+  std::cout << "RMS height error / dent depth: before " << before / d.depth << ", after "
+            << after / d.depth << ", iterations " << report.iterations << ", converged "
+            << report.converged() << "\n";
+  EXPECT_LT(after, 0.2 * before);
+}
+
+TEST(Fairing, NothingOutsideTheMovableSupportChanges)
+{
+  const Dented_hood d = dented_hood();
+  Surface_mesh mesh = to_mesh<Surface_mesh>(d.dented);
+  const auto region = disk_region(mesh, 1.5 * d.radius);
+  const auto movable = movable_vertices(mesh, region);
+  const std::vector<Point> before = points_of(mesh);
+  const auto model_before =
+      CGAL::compute_highlight_lines(mesh, hood_lights, CGAL::Emptyset_iterator());
+  HL::Highlight_line_sweeper<Surface_mesh> sweeper_before(mesh);
+  const std::vector<double> normals_before = sweeper_before.vertex_normals().normal;
+
+  CGAL::fair_with_highlight_lines(mesh, region, hood_lights);
+
+  const std::vector<Point> after = points_of(mesh);
+  std::size_t moved = 0;
+  for (std::size_t v = 0; v < before.size(); ++v) {
+    if (movable.count(v))
+      moved += before[v] != after[v];
+    else
+      EXPECT_EQ(before[v], after[v]) << "vertex " << v << " is not movable but moved";
+  }
+  EXPECT_GT(moved, movable.size() / 2);
+
+  // Normals: unchanged, bit for bit, for every vertex with no movable vertex in its one-ring.
+  HL::Highlight_line_sweeper<Surface_mesh> sweeper_after(mesh);
+  const std::vector<double>& normals_after = sweeper_after.vertex_normals().normal;
+  for (auto v : vertices(mesh)) {
+    bool touched = movable.count(std::size_t(v)) > 0;
+    for (auto w : CGAL::vertices_around_target(mesh.halfedge(v), mesh))
+      touched = touched || movable.count(std::size_t(w)) > 0;
+    if (touched)
+      continue;
+    // Local ids equal vertex indices on the whole mesh.
+    for (int k = 0; k < 3; ++k)
+      EXPECT_EQ(normals_before[3 * std::size_t(v) + k], normals_after[3 * std::size_t(v) + k]);
+  }
+
+  // Highlight nodes outside the region: all still there, bit for bit.
+  std::set<face_descriptor> in(region.begin(), region.end());
+  auto outside = [&](const auto& node) {
+    if (node.is_on_vertex()) {
+      for (auto f : CGAL::faces_around_target(mesh.halfedge(node.vertex), mesh))
+        if (!in.count(f))
+          return true;
+      return false;
+    }
+    return !in.count(mesh.face(node.halfedge)) ||
+           !in.count(mesh.face(mesh.opposite(node.halfedge)));
+  };
+  const auto model_after =
+      CGAL::compute_highlight_lines(mesh, hood_lights, CGAL::Emptyset_iterator());
+  std::set<std::tuple<long long, double, double, double>> after_nodes;
+  for (const auto& n : model_after.nodes())
+    after_nodes.insert({n.level, n.point.x(), n.point.y(), n.point.z()});
+  std::size_t checked = 0;
+  for (const auto& n : model_before.nodes())
+    if (outside(n)) {
+      ++checked;
+      EXPECT_TRUE(after_nodes.count({n.level, n.point.x(), n.point.y(), n.point.z()}));
+    }
+  EXPECT_GT(checked, 100u);
+}
+
+TEST(Fairing, NoTriangleFlipsAndStepsRespectTheBound)
+{
+  const Dented_hood d = dented_hood(40, 0.04);
+  Surface_mesh mesh = to_mesh<Surface_mesh>(d.dented);
+  const auto region = disk_region(mesh, 1.5 * d.radius);
+  std::map<face_descriptor, Vector> normal_before;
+  for (auto f : region)
+    normal_before[f] = CGAL::Polygon_mesh_processing::compute_face_normal(f, mesh);
+  std::vector<Point> previous = points_of(mesh);
+  double worst_ratio = 0;
+  auto visitor = [&](const HL::Fairing_report::Iteration&) {
+    const std::vector<Point> now = points_of(mesh);
+    for (auto v : vertices(mesh)) {
+      const double moved =
+          std::sqrt(CGAL::squared_distance(previous[std::size_t(v)], now[std::size_t(v)]));
+      double shortest = 1e300;
+      for (auto w : CGAL::vertices_around_target(mesh.halfedge(v), mesh))
+        shortest = std::min(shortest, std::sqrt(CGAL::squared_distance(previous[std::size_t(v)],
+                                                                       previous[std::size_t(w)])));
+      worst_ratio = std::max(worst_ratio, moved / shortest);
+    }
+    for (auto f : region)
+      EXPECT_GT(normal_before[f] * CGAL::Polygon_mesh_processing::compute_face_normal(f, mesh), 0);
+    previous = now;
+    return true;
+  };
+  CGAL::fair_with_highlight_lines(mesh, region, hood_lights, HLP::fairing_visitor(visitor));
+  EXPECT_LE(worst_ratio, 0.5 * (1 + 1e-9));
+  EXPECT_GT(worst_ratio, 0.0);
+}
+
+template <typename Mesh>
+std::vector<Point> faired_points(const Soup& soup, double radius)
+{
+  Mesh mesh = to_mesh<Mesh>(soup);
+  const auto region = disk_region(mesh, radius);
+  CGAL::fair_with_highlight_lines(mesh, region, hood_lights,
+                                  CGAL::parameters::number_of_iterations(5));
+  std::vector<Point> points;
+  for (auto v : vertices(mesh))
+    points.push_back(get(CGAL::vertex_point, mesh, v));
+  return points;
+}
+
+TEST(Fairing, SurfaceMeshAndPolyhedronAgree)
+{
+  const Dented_hood d = dented_hood(30);
+  const std::vector<Point> a = faired_points<Surface_mesh>(d.dented, 1.5 * d.radius);
+  const std::vector<Point> b = faired_points<Polyhedron>(d.dented, 1.5 * d.radius);
+  ASSERT_EQ(a.size(), b.size());
+  // Polyhedron_3 enumerates vertices in insertion order too.
+  for (std::size_t i = 0; i < a.size(); ++i)
+    EXPECT_LT(CGAL::squared_distance(a[i], b[i]), 1e-20) << i;
+}
+
+TEST(Fairing, CommutesWithRigidMotionAndScaling)
+{
+  const Dented_hood d = dented_hood(30);
+  Surface_mesh mesh = to_mesh<Surface_mesh>(d.dented);
+  const auto region = disk_region(mesh, 1.5 * d.radius);
+  const double angle = 0.9, c = std::cos(angle), s = std::sin(angle), lambda = 3.0;
+  const CGAL::Aff_transformation_3<K> motion(lambda * c, -lambda * s, 0, 0.5, lambda * s,
+                                             lambda * c, 0, -1.0, 0, 0, lambda, 2.0);
+  Surface_mesh moved = mesh;
+  for (auto v : vertices(moved))
+    moved.point(v) = moved.point(v).transform(motion);
+  const auto opts = CGAL::parameters::number_of_iterations(5);
+  CGAL::fair_with_highlight_lines(mesh, region, hood_lights, opts);
+  CGAL::fair_with_highlight_lines(moved, region, hood_lights.transformed(motion), opts);
+  double worst = 0, moved_most = 0;
+  for (auto v : vertices(mesh)) {
+    worst = std::max(
+        worst, std::sqrt(CGAL::squared_distance(mesh.point(v).transform(motion), moved.point(v))));
+    moved_most = std::max(
+        moved_most, std::abs(mesh.point(v).z() - to_mesh<Surface_mesh>(d.dented).point(v).z()));
+  }
+  EXPECT_LT(worst, 1e-6 * lambda) << "largest displacement " << moved_most;
+}
+
+TEST(BadFairingInput, ClearErrorsAndTheMeshUntouched)
+{
+  const Dented_hood d = dented_hood(20);
+  Surface_mesh mesh = to_mesh<Surface_mesh>(d.dented);
+  const std::vector<Point> before = points_of(mesh);
+  auto expect_problem = [&](auto&& call, HL::Invalid_input::Problem problem) {
+    try {
+      call();
+      ADD_FAILURE() << "no exception";
+    } catch (const HL::Invalid_input& e) {
+      EXPECT_EQ(e.problem(), problem) << e.what();
+    }
+    EXPECT_EQ(points_of(mesh), before);
+  };
+  expect_problem(
+      [&] { CGAL::fair_with_highlight_lines(mesh, std::vector<face_descriptor>(), hood_lights); },
+      HL::Invalid_input::Problem::EMPTY_FACE_RANGE);
+  expect_problem(
+      [&] {
+        CGAL::fair_with_highlight_lines(mesh, std::vector<face_descriptor>{*faces(mesh).begin()},
+                                        hood_lights);
+      },
+      HL::Invalid_input::Problem::NO_MOVABLE_VERTEX);
+  expect_problem(
+      [&] {
+        CGAL::fair_with_highlight_lines(mesh, std::vector<face_descriptor>{face_descriptor(100000)},
+                                        hood_lights);
+      },
+      HL::Invalid_input::Problem::FACE_NOT_IN_MESH);
+  const auto region = disk_region(mesh, 1.5 * d.radius);
+  expect_problem(
+      [&] {
+        CGAL::fair_with_highlight_lines(mesh, region, hood_lights, HLP::fairness_weight(-1.0));
+      },
+      HL::Invalid_input::Problem::INVALID_PARAMETER);
+  expect_problem(
+      [&] {
+        CGAL::fair_with_highlight_lines(mesh, region, hood_lights, HLP::convergence_threshold(0.0));
+      },
+      HL::Invalid_input::Problem::INVALID_PARAMETER);
+
+  // NaN next to the region.
+  Surface_mesh broken = mesh;
+  for (auto v : vertices(broken))
+    if (CGAL::squared_distance(broken.point(v), Point(0.1, -0.05, broken.point(v).z())) < 0.01) {
+      broken.point(v) = Point(std::nan(""), 0, 0);
+      break;
+    }
+  const std::vector<Point> broken_before = points_of(broken);
+  try {
+    CGAL::fair_with_highlight_lines(broken, disk_region(mesh, 1.5 * d.radius), hood_lights);
+    ADD_FAILURE() << "no exception";
+  } catch (const HL::Invalid_input& e) {
+    EXPECT_EQ(e.problem(), HL::Invalid_input::Problem::NON_FINITE_COORDINATE);
+  }
+  const std::vector<Point> broken_after = points_of(broken);
+  for (std::size_t i = 0; i < broken_before.size(); ++i)
+    EXPECT_TRUE(broken_before[i] == broken_after[i] || std::isnan(broken_before[i].x()));
+}
+
+// A solver that fails at a given call, to check the rollback.
+struct Failing_solver
+{
+  HL::Active_set_box_QP_solver inner;
+  int calls = 0, fail_at = 2;
+  void resize(std::size_t n) { inner.resize(n); }
+  void set_P(std::size_t i, std::size_t j, double v) { inner.set_P(i, j, v); }
+  void set_q(std::size_t i, double v) { inner.set_q(i, v); }
+  void set_r(double v) { inner.set_r(v); }
+  void set_l(std::size_t i, double v) { inner.set_l(i, v); }
+  void set_u(std::size_t i, double v) { inner.set_u(i, v); }
+  template <typename OutputIterator>
+  HL::Box_QP_report solve(OutputIterator out)
+  {
+    HL::Box_QP_report report = inner.solve(out);
+    if (++calls == fail_at) {
+      report.status = HL::Box_QP_status::NUMERICAL_FAILURE;
+      report.message = "injected failure";
+    }
+    return report;
+  }
+};
+
+TEST(BadFairingInput, SolverFailureRollsTheMeshBack)
+{
+  const Dented_hood d = dented_hood(30);
+  Surface_mesh mesh = to_mesh<Surface_mesh>(d.dented);
+  const std::vector<Point> before = points_of(mesh);
+  Failing_solver solver;
+  try {
+    CGAL::fair_with_highlight_lines(mesh, disk_region(mesh, 1.5 * d.radius), hood_lights,
+                                    HLP::qp_solver(std::ref(solver)));
+    ADD_FAILURE() << "no exception";
+  } catch (const HL::Fairing_failure& e) {
+    EXPECT_NE(std::string(e.what()).find("injected failure"), std::string::npos);
+    EXPECT_EQ(e.report().iterations, 1u);
+  }
+  EXPECT_EQ(solver.calls, 2);
+  EXPECT_EQ(points_of(mesh), before);
+}
+
+TEST(BadFairingInput, ThrowingVisitorRollsTheMeshBack)
+{
+  const Dented_hood d = dented_hood(30);
+  Surface_mesh mesh = to_mesh<Surface_mesh>(d.dented);
+  const std::vector<Point> before = points_of(mesh);
+  auto visitor = [](const HL::Fairing_report::Iteration&) -> bool {
+    throw std::runtime_error("stop");
+  };
+  EXPECT_THROW(CGAL::fair_with_highlight_lines(mesh, disk_region(mesh, 1.5 * d.radius), hood_lights,
+                                               HLP::fairing_visitor(visitor)),
+               std::runtime_error);
+  EXPECT_EQ(points_of(mesh), before);
+}
+
+} // namespace
