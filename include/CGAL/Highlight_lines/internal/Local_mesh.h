@@ -140,6 +140,102 @@ inline std::string describe_point(const double* p)
   return s.str();
 }
 
+template <typename TriangleMesh, typename FaceIndexMap>
+[[noreturn]] void throw_non_triangle(FaceIndexMap fim,
+                                     typename boost::graph_traits<TriangleMesh>::face_descriptor f)
+{
+  throw Invalid_input(Invalid_input::Problem::NON_TRIANGLE_FACE,
+                      "face " + std::to_string(get(fim, f)) +
+                          " is not a triangle: the highlight line model is defined on triangle "
+                          "meshes (triangulate it first, e.g. with "
+                          "CGAL::Polygon_mesh_processing::triangulate_faces())",
+                      get(fim, f));
+}
+
+// The whole mesh: sequential passes over vertices, edges and faces with dense tables indexed
+// by the index maps (cheaper than discovering elements from the faces).
+template <typename TriangleMesh, typename VertexPointMap, typename VertexIndexMap,
+          typename FaceIndexMap, typename HalfedgeIndexMap>
+void build_whole_local_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim,
+                            FaceIndexMap fim, HalfedgeIndexMap him, Local_mesh<TriangleMesh>& lm)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  std::vector<int> vertex_id(num_vertices(tm), -1), halfedge_edge(num_halfedges(tm), -1);
+  auto grow = [](std::vector<int>& table, std::size_t key) {
+    if (key >= table.size())
+      table.resize(key + 1, -1);
+  };
+
+  lm.vertex_handles.reserve(num_vertices(tm));
+  lm.vertex_indices.reserve(num_vertices(tm));
+  lm.xyz.reserve(3 * num_vertices(tm));
+  for (typename GT::vertex_descriptor v : vertices(tm)) {
+    if (halfedge(v, tm) == GT::null_halfedge())
+      continue; // isolated: not part of the surface
+    const std::size_t key = std::size_t(get(vim, v));
+    grow(vertex_id, key);
+    vertex_id[key] = int(lm.vertex_handles.size());
+    lm.vertex_handles.push_back(v);
+    lm.vertex_indices.push_back(key);
+    const auto& p = get(vpm, v);
+    const double c[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+    if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2]))
+      throw Invalid_input(Invalid_input::Problem::NON_FINITE_COORDINATE,
+                          "vertex " + std::to_string(key) + " has a non-finite coordinate " +
+                              describe_point(c),
+                          key);
+    lm.xyz.insert(lm.xyz.end(), c, c + 3);
+  }
+  lm.number_of_model_vertices = lm.vertex_handles.size();
+
+  lm.edge_halfedges.reserve(num_edges(tm));
+  lm.edge_vertices.reserve(num_edges(tm));
+  for (auto e : edges(tm)) {
+    typename GT::halfedge_descriptor h = halfedge(e, tm);
+    int a = vertex_id[std::size_t(get(vim, source(h, tm)))];
+    int b = vertex_id[std::size_t(get(vim, target(h, tm)))];
+    const std::size_t h_key = std::size_t(get(him, h)),
+                      o_key = std::size_t(get(him, opposite(h, tm)));
+    // Canonical direction, from the lexicographically smaller point, so that node positions
+    // do not depend on which face saw an edge first.
+    if (lexicographically_smaller(lm.point(b), lm.point(a)) ||
+        (!lexicographically_smaller(lm.point(a), lm.point(b)) &&
+         lm.vertex_indices[std::size_t(b)] < lm.vertex_indices[std::size_t(a)])) {
+      std::swap(a, b);
+      h = opposite(h, tm);
+    }
+    grow(halfedge_edge, (std::max)(h_key, o_key));
+    halfedge_edge[h_key] = halfedge_edge[o_key] = int(lm.edge_halfedges.size());
+    lm.edge_halfedges.push_back(h);
+    lm.edge_vertices.push_back({a, b});
+  }
+
+  lm.face_handles.reserve(num_faces(tm));
+  lm.face_indices.reserve(num_faces(tm));
+  lm.face_vertices.reserve(num_faces(tm));
+  lm.face_edges.reserve(num_faces(tm));
+  lm.face_ids = Compact_ids(true, num_faces(tm));
+  for (typename GT::face_descriptor f : faces(tm)) {
+    const typename GT::halfedge_descriptor h0 = halfedge(f, tm), h1 = next(h0, tm),
+                                           h2 = next(h1, tm);
+    if (next(h2, tm) != h0)
+      throw_non_triangle<TriangleMesh>(fim, f);
+    bool inserted = false;
+    lm.face_ids.insert(std::size_t(get(fim, f)), int(lm.face_handles.size()), inserted);
+    lm.face_handles.push_back(f);
+    lm.face_indices.push_back(std::size_t(get(fim, f)));
+    lm.face_vertices.push_back({vertex_id[std::size_t(get(vim, source(h0, tm)))],
+                                vertex_id[std::size_t(get(vim, source(h1, tm)))],
+                                vertex_id[std::size_t(get(vim, source(h2, tm)))]});
+    lm.face_edges.push_back({halfedge_edge[std::size_t(get(him, h0))],
+                             halfedge_edge[std::size_t(get(him, h1))],
+                             halfedge_edge[std::size_t(get(him, h2))]});
+  }
+  lm.number_of_model_faces = lm.face_handles.size();
+  lm.mesh = &tm;
+  lm.face_index = [fim](typename GT::face_descriptor f) { return std::size_t(get(fim, f)); };
+}
+
 // Builds the local mesh on `faces` (all faces of `tm` if `whole_mesh`). Throws Invalid_input
 // for non-triangle faces, faces not in the mesh, and non-finite coordinates.
 template <typename TriangleMesh, typename FaceRange, typename VertexPointMap,
@@ -153,21 +249,18 @@ void build_local_mesh(const TriangleMesh& tm, const FaceRange& faces, bool whole
   typedef typename LM::face_descriptor face_descriptor;
   typedef typename LM::vertex_descriptor vertex_descriptor;
   typedef Invalid_input::Problem Problem;
+  if (whole_mesh) {
+    build_whole_local_mesh(tm, vpm, vim, fim, him, lm);
+    return;
+  }
 
-  Compact_ids face_ids(whole_mesh, whole_mesh ? num_faces(tm) : 0);
-  Compact_ids vertex_ids(whole_mesh, whole_mesh ? num_vertices(tm) : 0);
-  Compact_ids edge_ids(whole_mesh, whole_mesh ? num_halfedges(tm) : 0);
+  Compact_ids face_ids(false, 0), vertex_ids(false, 0), edge_ids(false, 0);
 
   auto check_triangle = [&](face_descriptor f) {
     halfedge_descriptor h = halfedge(f, tm);
     if (h == boost::graph_traits<TriangleMesh>::null_halfedge() ||
         next(next(next(h, tm), tm), tm) != h)
-      throw Invalid_input(Problem::NON_TRIANGLE_FACE,
-                          "face " + std::to_string(get(fim, f)) +
-                              " is not a triangle: the highlight line model is defined on "
-                              "triangle meshes (triangulate it first, e.g. with "
-                              "CGAL::Polygon_mesh_processing::triangulate_faces())",
-                          get(fim, f));
+      throw_non_triangle<TriangleMesh>(fim, f);
   };
 
   auto add_vertex = [&](vertex_descriptor v) {
@@ -208,16 +301,6 @@ void build_local_mesh(const TriangleMesh& tm, const FaceRange& faces, bool whole
   };
 
   // 1. Model faces, with their vertices.
-  if (whole_mesh) {
-    lm.face_handles.reserve(num_faces(tm));
-    lm.face_indices.reserve(num_faces(tm));
-    lm.face_vertices.reserve(num_faces(tm));
-    lm.vertex_handles.reserve(num_vertices(tm));
-    lm.vertex_indices.reserve(num_vertices(tm));
-    lm.xyz.reserve(3 * num_vertices(tm));
-    lm.edge_halfedges.reserve(num_edges(tm));
-    lm.edge_vertices.reserve(num_edges(tm));
-  }
   auto add_edge = [&](halfedge_descriptor h) {
     // An edge is keyed by the smaller index of its halfedges (CGAL 5.5 has no usable edge
     // index map for a Polyhedron_3 without ids).
@@ -242,17 +325,6 @@ void build_local_mesh(const TriangleMesh& tm, const FaceRange& faces, bool whole
     return e;
   };
 
-  if (whole_mesh) {
-    // Sequential passes over vertices and edges first: cheaper than discovering them from the
-    // faces, and the ids follow the mesh's own order.
-    for (vertex_descriptor v : vertices(tm)) {
-      if (halfedge(v, tm) != boost::graph_traits<TriangleMesh>::null_halfedge())
-        add_vertex(v);
-    }
-    for (auto e : edges(tm))
-      add_edge(halfedge(e, tm));
-  }
-
   for (face_descriptor f : faces) {
     if (f == boost::graph_traits<TriangleMesh>::null_face())
       throw Invalid_input(Problem::FACE_NOT_IN_MESH, "the face range contains a null face");
@@ -270,7 +342,7 @@ void build_local_mesh(const TriangleMesh& tm, const FaceRange& faces, bool whole
   }
 
   // 3. One-ring closure of the model vertices: every incident face (for eq. 3).
-  if (!whole_mesh) {
+  {
     for (std::size_t v = 0; v < lm.number_of_model_vertices; ++v)
       for (halfedge_descriptor h :
            halfedges_around_target(halfedge(lm.vertex_handles[v], tm), tm)) {
