@@ -4,6 +4,7 @@
 #include <CGAL/Aff_transformation_3.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/compute_highlight_lines.h>
+#include <CGAL/Highlight_lines/fairing_building_blocks.h>
 #include <CGAL/fair_with_highlight_lines.h>
 
 #include <gtest/gtest.h>
@@ -432,6 +433,42 @@ TEST(BadFairingInput, ThrowingVisitorRollsTheMeshBack)
                                                HLP::fairing_visitor(visitor)),
                std::runtime_error);
   EXPECT_EQ(points_of(mesh), before);
+}
+
+} // namespace
+
+namespace {
+using namespace test;
+namespace HL = CGAL::Highlight_lines;
+
+TEST(FairingBuildingBlocks, MovableVerticesAndDesiredLinesAgreeWithTheFairing)
+{
+  const Dented_hood d = dented_hood(30);
+  Surface_mesh mesh = to_mesh<Surface_mesh>(d.dented);
+  const auto region = disk_region(mesh, 1.5 * d.radius);
+  std::vector<Surface_mesh::Vertex_index> movable;
+  HL::movable_vertices(mesh, region, std::back_inserter(movable));
+  std::set<std::size_t> ids;
+  for (auto v : movable)
+    ids.insert(std::size_t(v));
+  EXPECT_EQ(ids, movable_vertices(mesh, region));
+
+  std::vector<std::vector<Point>> desired;
+  HL::desired_highlight_lines(mesh, region, hood_lights, std::back_inserter(desired), 16);
+  const auto report = CGAL::fair_with_highlight_lines(mesh, region, hood_lights,
+                                                      CGAL::parameters::number_of_iterations(1));
+  EXPECT_EQ(desired.size(), report.number_of_lines_targeted);
+  ASSERT_GT(desired.size(), 3u);
+  for (const auto& curve : desired) {
+    ASSERT_EQ(curve.size(), 16u);
+    // Evenly spaced in arc length, and never turning back.
+    for (std::size_t i = 1; i + 1 < curve.size(); ++i) {
+      const Vector a = curve[i] - curve[i - 1], b = curve[i + 1] - curve[i];
+      EXPECT_GT(a * b, 0);
+      EXPECT_NEAR(std::sqrt(a.squared_length()), std::sqrt(b.squared_length()),
+                  0.05 * std::sqrt(a.squared_length()));
+    }
+  }
 }
 
 } // namespace

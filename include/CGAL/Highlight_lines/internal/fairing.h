@@ -102,9 +102,7 @@ public:
   Fairing_report run(const std::function<bool(const Fairing_report::Iteration&)>& visitor)
   {
     Fairing_report report;
-    report.number_of_movable_vertices = region_.movable.size();
-    compute_model();
-    make_desired_lines(report);
+    make_targets(report);
 
     for (std::size_t iteration = 0;; ++iteration) {
       Fairing_report::Iteration step;
@@ -180,6 +178,15 @@ public:
       report.history.push_back(last);
     }
     return report;
+  }
+
+  // The model of the current mesh and the desired lines (§3.2), fixed for the whole fairing.
+  void make_targets(Fairing_report& report)
+  {
+    report.number_of_movable_vertices = region_.movable.size();
+    compute_model();
+    desired_.clear();
+    make_desired_lines(report);
   }
 
   const Fairing_region& region() const { return region_; }

@@ -1,0 +1,340 @@
+// The whole story on one mesh: highlight lines show a dent, the dent's region is faired with
+// highlight lines, and the lines run smoothly again.
+//
+//   fair_with_highlight_lines [mesh] [options]      (see --help)
+//
+// With no mesh, the bundled VW Beetle body is used and a dent is pressed into its roof first
+// (so that there is something to repair): the program says so, and shows it.
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Highlight_lines/default_light_setup.h>
+#include <CGAL/Highlight_lines/fairing_building_blocks.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/compute_highlight_lines.h>
+#include <CGAL/fair_with_highlight_lines.h>
+
+#include "highlight_picture.h"
+
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+typedef Mesh::Face_index face_descriptor;
+namespace HL = CGAL::Highlight_lines;
+namespace HLP = CGAL::Highlight_lines::parameters;
+namespace pic = highlight_picture;
+
+namespace {
+
+const char* usage =
+    "usage: fair_with_highlight_lines [MESH] [options]\n"
+    "\n"
+    "Fairs a region of a triangle mesh so that the surface and its highlight lines become\n"
+    "smooth, and writes PREFIX.png (before / after, close-up), PREFIX_faired.off and, when a\n"
+    "dent was added, PREFIX_dented.off.\n"
+    "MESH defaults to the bundled VW Beetle body, into whose roof a dent is pressed first.\n"
+    "\n"
+    "options:\n"
+    "  --out PREFIX          output prefix (default: fairing)\n"
+    "  --center X Y Z        centre of the region (the nearest vertex is used); default: on the\n"
+    "                        roof of the bundled beetle, or the mesh's highest point on the\n"
+    "                        axis of smallest extent\n"
+    "  --radius R            region radius: faces whose three vertices lie within R of the\n"
+    "                        centre (default: 7 % of the bounding box diagonal)\n"
+    "  --region FILE         region as a file of face indices (whitespace separated) instead\n"
+    "  --dent DEPTH          press a smooth dent of this depth into the region first, along the\n"
+    "                        normals (default: 0.6 % of the diagonal for the bundled beetle,\n"
+    "                        none for a user's mesh); 0 for none\n"
+    "  --lines N             about N lights across the region (default 12)\n"
+    "  --iterations N        iteration bound (default 50)\n"
+    "  --size W H            picture size per panel (default 800 600)\n"
+    "  --help                this text\n";
+
+[[noreturn]] void fail(const std::string& message)
+{
+  std::cerr << "fair_with_highlight_lines: " << message << "\n(see --help)\n";
+  std::exit(2);
+}
+
+double number(int& i, int argc, char** argv)
+{
+  if (++i >= argc)
+    fail(std::string("missing value after ") + argv[i - 1]);
+  char* end = nullptr;
+  const double value = std::strtod(argv[i], &end);
+  if (end == argv[i] || *end != '\0')
+    fail(std::string("not a number: ") + argv[i]);
+  return value;
+}
+
+struct Options
+{
+  std::string mesh = std::string(HIGHLIGHT_LINES_DATA_DIR) + "/beetle.off";
+  bool default_mesh = true;
+  std::string out = "fairing";
+  std::optional<K::Point_3> center;
+  std::optional<double> radius, dent;
+  std::string region_file;
+  int lines = 12, iterations = 50, width = 800, height = 600;
+};
+
+Options parse(int argc, char** argv)
+{
+  Options o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--help" || a == "-h") {
+      std::cout << usage;
+      std::exit(0);
+    } else if (a == "--out" || a == "--region") {
+      if (++i >= argc)
+        fail("missing value after " + a);
+      (a == "--out" ? o.out : o.region_file) = argv[i];
+    } else if (a == "--center") {
+      const double x = number(i, argc, argv), y = number(i, argc, argv), z = number(i, argc, argv);
+      o.center = K::Point_3(x, y, z);
+    } else if (a == "--radius")
+      o.radius = number(i, argc, argv);
+    else if (a == "--dent")
+      o.dent = number(i, argc, argv);
+    else if (a == "--lines")
+      o.lines = int(number(i, argc, argv));
+    else if (a == "--iterations")
+      o.iterations = int(number(i, argc, argv));
+    else if (a == "--size") {
+      o.width = int(number(i, argc, argv));
+      o.height = int(number(i, argc, argv));
+    } else if (!a.empty() && a[0] == '-')
+      fail("unknown option " + a);
+    else {
+      o.mesh = a;
+      o.default_mesh = false;
+    }
+  }
+  if (o.width < 64 || o.height < 64 || o.width > 8000 || o.height > 8000)
+    fail("--size must be between 64 and 8000 pixels");
+  return o;
+}
+
+pic::Point3 to_array(const K::Point_3& p)
+{
+  return {p.x(), p.y(), p.z()};
+}
+pic::Vector3 to_array(const K::Vector_3& v)
+{
+  return {v.x(), v.y(), v.z()};
+}
+
+// A close-up of the region: the mesh shaded (region tinted), its highlight lines, and
+// optionally other curves (the desired lines) in colour.
+pic::Image picture(const Mesh& mesh, const std::vector<face_descriptor>& region,
+                   const HL::Light_setup<K>& lights, const std::pair<long long, long long>& levels,
+                   const std::vector<std::vector<K::Point_3>>& extra, const Options& o)
+{
+  std::vector<pic::Point3> points;
+  for (auto v : vertices(mesh))
+    points.push_back(to_array(mesh.point(v)));
+  std::vector<std::array<std::size_t, 3>> triangles;
+  std::vector<std::optional<pic::RGB>> colors;
+  std::vector<bool> in_region(num_faces(mesh), false);
+  for (face_descriptor f : region)
+    in_region[std::size_t(f)] = true;
+  for (auto f : faces(mesh)) {
+    std::array<std::size_t, 3> t{};
+    std::size_t j = 0;
+    for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      t[j++] = std::size_t(v);
+    triangles.push_back(t);
+    colors.push_back(in_region[std::size_t(f)] ? std::optional<pic::RGB>(pic::mix(
+                                                     pic::colors::paint, pic::colors::region, 0.45))
+                                               : std::nullopt);
+  }
+  // Close-up: the region and a margin, seen from the light plane's side.
+  std::vector<pic::Point3> focus;
+  for (face_descriptor f : region)
+    for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      focus.push_back(to_array(mesh.point(v)));
+  const auto z = to_array(lights.plane_normal());
+  const auto h = to_array(lights.light_direction());
+  pic::Vector3 view;
+  for (int k = 0; k < 3; ++k)
+    view[k] = -(0.35 * h[k] + z[k]);
+  pic::Camera camera = pic::fit_camera(focus, view, h, o.width, o.height, 0.0);
+  camera.view_height *= 1.35;
+  pic::Renderer renderer(o.width, o.height, camera);
+  renderer.draw_mesh(points, triangles, pic::Surface_style{}, colors);
+  std::vector<std::vector<K::Point_3>> lines;
+  CGAL::compute_highlight_lines(
+      mesh, lights, std::back_inserter(lines),
+      HLP::combine(HLP::level_range(levels), HLP::facing_side_only(true)));
+  std::vector<std::vector<pic::Point3>> polylines;
+  for (const auto& l : lines) {
+    polylines.emplace_back();
+    for (const auto& p : l)
+      polylines.back().push_back(to_array(p));
+  }
+  renderer.draw_polylines(polylines);
+  if (!extra.empty()) {
+    std::vector<std::vector<pic::Point3>> curves;
+    for (const auto& l : extra) {
+      curves.emplace_back();
+      for (const auto& p : l)
+        curves.back().push_back(to_array(p));
+    }
+    pic::Line_style blue;
+    blue.color = pic::colors::blue;
+    blue.width = 2.2;
+    renderer.draw_polylines(curves, blue);
+  }
+  return renderer.image();
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  const Options o = parse(argc, argv);
+  Mesh mesh;
+  if (!CGAL::IO::read_polygon_mesh(o.mesh, mesh) || is_empty(mesh)) {
+    std::cerr << "fair_with_highlight_lines: cannot read a polygon mesh from " << o.mesh << "\n";
+    return 1;
+  }
+  std::cout << "mesh " << o.mesh << ": " << num_vertices(mesh) << " vertices, " << num_faces(mesh)
+            << " faces\n";
+  try {
+    const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(mesh);
+    const double diagonal =
+        std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                  CGAL::square(box.zmax() - box.zmin()));
+    // The region's centre: a vertex.
+    K::Point_3 wanted = o.center ? *o.center : K::Point_3(0.04, box.ymax(), -0.12);
+    if (!o.center && !o.default_mesh) { // top of the mesh along its smallest extent
+      const double ext[3] = {box.xmax() - box.xmin(), box.ymax() - box.ymin(),
+                             box.zmax() - box.zmin()};
+      const int up = ext[0] < ext[1] ? (ext[0] < ext[2] ? 0 : 2) : (ext[1] < ext[2] ? 1 : 2);
+      double c[3] = {(box.xmin() + box.xmax()) / 2, (box.ymin() + box.ymax()) / 2,
+                     (box.zmin() + box.zmax()) / 2};
+      c[up] = up == 0 ? box.xmax() : up == 1 ? box.ymax() : box.zmax();
+      wanted = K::Point_3(c[0], c[1], c[2]);
+    }
+    Mesh::Vertex_index center_vertex = *vertices(mesh).begin();
+    for (auto v : vertices(mesh))
+      if (CGAL::squared_distance(mesh.point(v), wanted) <
+          CGAL::squared_distance(mesh.point(center_vertex), wanted))
+        center_vertex = v;
+    const K::Point_3 center = mesh.point(center_vertex);
+    const double radius = o.radius ? *o.radius : 0.07 * diagonal;
+
+    std::vector<face_descriptor> region;
+    if (!o.region_file.empty()) {
+      std::ifstream in(o.region_file);
+      long long id;
+      while (in >> id) {
+        if (id < 0 || id >= (long long)num_faces(mesh))
+          fail("face index " + std::to_string(id) + " in " + o.region_file +
+               " is not a face of the mesh");
+        region.push_back(face_descriptor(std::uint32_t(id)));
+      }
+      if (!in.eof())
+        fail("cannot read face indices from " + o.region_file);
+    } else {
+      for (auto f : faces(mesh)) {
+        bool inside = true;
+        for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+          inside = inside && CGAL::squared_distance(mesh.point(v), center) < radius * radius;
+        if (inside)
+          region.push_back(f);
+      }
+    }
+    std::cout << "region: " << region.size() << " faces around " << center << "\n";
+
+    // The light tunnel of the whole mesh, with the spacing refined so that about o.lines
+    // lights cross the region: the close-up shows the lines' shape there.
+    const auto tunnel = HL::default_light_setup(mesh);
+    const auto across = HL::default_level_range(mesh, tunnel, HLP::face_range(region));
+    const double spacing = CGAL::to_double(tunnel.spacing()) *
+                           double((std::max)(across.second - across.first, 1LL)) / double(o.lines);
+    const HL::Light_setup<K> lights(tunnel.base_point(), tunnel.light_direction(),
+                                    tunnel.plane_normal(), spacing);
+    const auto levels = HL::default_level_range(mesh, lights);
+
+    // The dent: a smooth bump (1 - (r/R)^2)^3 pressed along the normals, inside the region.
+    const double dent = o.dent ? *o.dent : (o.default_mesh ? 0.006 * diagonal : 0.0);
+    if (dent != 0) {
+      std::vector<std::pair<Mesh::Vertex_index, K::Point_3>> moved;
+      const double dent_radius = 0.6 * radius;
+      for (auto v : vertices(mesh)) {
+        const double r2 =
+            CGAL::squared_distance(mesh.point(v), center) / (dent_radius * dent_radius);
+        if (r2 >= 1)
+          continue;
+        const K::Vector_3 n = CGAL::Polygon_mesh_processing::compute_vertex_normal(v, mesh);
+        moved.emplace_back(v, mesh.point(v) - dent * (1 - r2) * (1 - r2) * (1 - r2) * n);
+      }
+      for (const auto& m : moved)
+        mesh.point(m.first) = m.second;
+      std::cout << "pressed a dent of depth " << dent << " and radius " << dent_radius
+                << " into the surface (" << moved.size() << " vertices moved)\n";
+      CGAL::IO::write_polygon_mesh(o.out + "_dented.off", mesh,
+                                   CGAL::parameters::stream_precision(17));
+    }
+
+    std::vector<std::vector<K::Point_3>> desired;
+    HL::desired_highlight_lines(mesh, region, lights, std::back_inserter(desired));
+    const pic::Image before = picture(mesh, region, lights, levels, desired, o);
+
+    const auto start = std::chrono::steady_clock::now();
+    auto progress = [](const HL::Fairing_report::Iteration& it) {
+      std::cout << "  iteration: q_fair " << it.fairness_energy << ", q_diff "
+                << it.difference_energy << ", max |x| / mean edge " << it.relative_max_displacement
+                << ", lines targeted " << it.lines_targeted << "\n";
+      return true;
+    };
+    const HL::Fairing_report report = CGAL::fair_with_highlight_lines(
+        mesh, region, lights,
+        HLP::combine(CGAL::parameters::number_of_iterations(o.iterations),
+                     HLP::fairing_visitor(progress)));
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::cout << (report.converged() ? "converged" : "stopped") << " after " << report.iterations
+              << " iterations in " << seconds << " s; " << report.number_of_movable_vertices
+              << " movable vertices, " << report.number_of_lines_targeted << " lines targeted ("
+              << report.number_of_two_segment_targets << " two-segment), "
+              << report.number_of_lines_without_target << " without target\n";
+    if (!report.history.empty())
+      std::cout << "target F = w1 q_fair + w2 q_diff: " << report.history.front().target_value
+                << " -> " << report.history.back().target_value << "\n";
+
+    const pic::Image after = picture(mesh, region, lights, levels, desired, o);
+    pic::Layout layout;
+    layout.title = "Fairing with highlight lines";
+    const pic::Image both =
+        pic::side_by_side({before, after},
+                          {dent != 0 ? "before: a dent pressed into the surface" : "before",
+                           "after " + std::to_string(report.iterations) + " iterations"},
+                          layout);
+    if (!pic::write_png(o.out + ".png", both) ||
+        !CGAL::IO::write_polygon_mesh(o.out + "_faired.off", mesh,
+                                      CGAL::parameters::stream_precision(17))) {
+      std::cerr << "fair_with_highlight_lines: cannot write the output files\n";
+      return 1;
+    }
+    std::cout << "wrote " << o.out << ".png and " << o.out << "_faired.off (blue: the desired "
+              << "highlight lines; tinted: the region)\n";
+  } catch (const HL::Invalid_input& e) {
+    std::cerr << "fair_with_highlight_lines: " << e.what() << "\n";
+    return 1;
+  } catch (const HL::Fairing_failure& e) {
+    std::cerr << "fair_with_highlight_lines: " << e.what() << " (the mesh was left unchanged)\n";
+    return 1;
+  }
+  return 0;
+}
