@@ -2,7 +2,9 @@
 // Polygon_mesh_processing::compute_vertex_normals on the same mesh, measured in the same run
 // (any highlight computation must at least compute normals).
 //
-// Counters: `x_normals` = time of the benchmark / time of compute_vertex_normals.
+// Counters: `x_normals` = time of the benchmark / time of compute_vertex_normals (best of 5,
+// measured once per run); `nodes` = size of the output. Argument 0: the example program's
+// light tunnel; 1: every level.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Highlight_lines/Highlight_line_sweeper.h>
 #include <CGAL/Highlight_lines/default_light_setup.h>
@@ -79,16 +81,30 @@ void BM_compute_vertex_normals(benchmark::State& state)
   report(state, total / double(state.iterations()));
 }
 
+// The lights of the example program (a light tunnel above the car: the levels over the
+// central 90 % of the surface facing it), or every level (argument 1): near the silhouettes
+// seen from the light plane lines crowd, and the output is several times larger.
+std::pair<long long, long long> levels_of(const benchmark::State& state,
+                                          const HL::Light_setup<K>& lights)
+{
+  if (state.range(0) == 1)
+    return {-(1LL << 50), 1LL << 50};
+  static const auto tunnel = HL::default_level_range(big_mesh(), lights);
+  return tunnel;
+}
+
 // The whole model from scratch: flat copy, normals (eq. 3), classification, nodes, lines.
 void BM_compute_highlight_lines(benchmark::State& state)
 {
   const Mesh& mesh = big_mesh();
   const auto lights = HL::default_light_setup(mesh);
+  const auto np = HL::parameters::combine(HL::parameters::level_range(levels_of(state, lights)),
+                                          HL::parameters::facing_side_only(state.range(0) == 0));
   double total = 0;
   std::size_t nodes = 0;
   for (auto _ : state) {
     const auto start = std::chrono::steady_clock::now();
-    const auto model = CGAL::compute_highlight_lines(mesh, lights, CGAL::Emptyset_iterator());
+    const auto model = CGAL::compute_highlight_lines(mesh, lights, CGAL::Emptyset_iterator(), np);
     total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     nodes = model.nodes().size();
   }
@@ -102,22 +118,27 @@ void BM_sweep_update(benchmark::State& state)
   const Mesh& mesh = big_mesh();
   const auto lights = HL::default_light_setup(mesh);
   const HL::Highlight_line_sweeper<Mesh> sweeper(mesh);
+  const auto np = HL::parameters::combine(HL::parameters::level_range(levels_of(state, lights)),
+                                          HL::parameters::facing_side_only(state.range(0) == 0));
   double total = 0;
   int step = 0;
+  std::size_t nodes = 0;
   for (auto _ : state) {
     const auto moved =
         lights.translated(lights.index_direction() * (lights.spacing() * 0.1 * (++step % 10)));
     const auto start = std::chrono::steady_clock::now();
-    const auto model = sweeper.compute(moved);
+    const auto model = sweeper.compute(moved, np);
     total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    nodes = model.nodes().size();
     benchmark::DoNotOptimize(model.nodes().data());
   }
+  state.counters["nodes"] = double(nodes);
   report(state, total / double(state.iterations()));
 }
 
 BENCHMARK(BM_compute_vertex_normals)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_compute_highlight_lines)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_sweep_update)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_compute_highlight_lines)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_sweep_update)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 } // namespace
 
