@@ -186,6 +186,7 @@ public:
   struct Raw_model
   {
     std::vector<internal::Vertex_level> levels;
+    std::vector<long long> keys; // internal::level_key() of each vertex
     internal::Highlight_nodes nodes;
     internal::Highlight_segments segments;
     internal::Traced_lines lines; // node ids in lines are canonical ids: see node()
@@ -202,8 +203,10 @@ public:
     if (facing_side_only)
       for (internal::Vertex_level& level : out.levels)
         level.turned_away = level.normal_side < 0;
-    internal::compute_highlight_nodes(mesh_, out.levels, lights.spacing_value(), window, out.nodes);
-    internal::connect_highlight_nodes(mesh_, out.levels, out.nodes, window, out.segments);
+    internal::compute_level_keys(out.levels, out.keys);
+    internal::compute_highlight_nodes(mesh_, out.levels, out.keys, lights.spacing_value(), window,
+                                      out.nodes);
+    internal::connect_highlight_nodes(mesh_, out.levels, out.keys, out.nodes, window, out.segments);
     internal::trace_lines(out.nodes.nodes, out.segments.segments, out.lines);
   }
 

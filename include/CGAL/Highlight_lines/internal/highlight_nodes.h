@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -72,9 +73,26 @@ inline int node_on_edge(const Highlight_nodes& hn, int e, const Vertex_level& a,
 // Eq. 4 (corrected): on edge (V1, V2) with d1 != d2, a node for every m with m·s strictly
 // between d1 and d2, at Q = V1 + t (V2 - V1), t = (m·s - d1) / (d2 - d1). Which levels lie
 // strictly between is read from the exact vertex classes, never from the rounded d values.
+// A compact sort key of a vertex class, so that the hot loops over edges and faces read 8
+// bytes per vertex: 2k + 1 when k·s < d < (k+1)·s, 2k when d = k·s; a sentinel when d is
+// undefined. Two ends with equal keys have no level strictly between them.
+inline long long level_key(const Vertex_level& l)
+{
+  return l.defined() ? 2 * l.level + (l.on_level ? 0 : 1) : (std::numeric_limits<long long>::min)();
+}
+
+inline void compute_level_keys(const std::vector<Vertex_level>& levels,
+                               std::vector<long long>& keys)
+{
+  keys.resize(levels.size());
+  for (std::size_t v = 0; v < levels.size(); ++v)
+    keys[v] = level_key(levels[v]);
+}
+
 template <typename TriangleMesh>
 void compute_highlight_nodes(const Local_mesh<TriangleMesh>& lm,
-                             const std::vector<Vertex_level>& levels, double spacing,
+                             const std::vector<Vertex_level>& levels,
+                             const std::vector<long long>& keys, double spacing,
                              const Level_window& window, Highlight_nodes& out)
 {
   const std::size_t ne = lm.edge_vertices.size();
@@ -82,12 +100,17 @@ void compute_highlight_nodes(const Local_mesh<TriangleMesh>& lm,
   out.edge_first_node.assign(ne, Highlight_nodes::no_node);
   out.number_of_capped_edges = 0;
 
+  std::vector<int> carrying; // edges with nodes, in order
   int next_id = 0;
   for (std::size_t e = 0; e < ne; ++e) {
-    const Vertex_level& a = levels[std::size_t(lm.edge_vertices[e][0])];
-    const Vertex_level& b = levels[std::size_t(lm.edge_vertices[e][1])];
-    if (a.level == b.level || !edge_is_usable(a, b))
+    const std::size_t va = std::size_t(lm.edge_vertices[e][0]),
+                      vb = std::size_t(lm.edge_vertices[e][1]);
+    if (keys[va] == keys[vb])
       continue; // the common case first: no level strictly inside
+    const Vertex_level& a = levels[va];
+    const Vertex_level& b = levels[vb];
+    if (a.level == b.level || !edge_is_usable(a, b))
+      continue;
     const Vertex_level& hi = a.level < b.level ? b : a;
     // Levels strictly inside: (lo.level, hi.level], minus hi.level when hi lies on it.
     const long long first = first_interior_level(a, b, window);
@@ -101,12 +124,12 @@ void compute_highlight_nodes(const Local_mesh<TriangleMesh>& lm,
     }
     out.edge_first_node[e] = next_id;
     next_id += int(last - first + 1);
+    carrying.push_back(int(e));
   }
 
   out.nodes.resize(std::size_t(next_id));
-  for (std::size_t e = 0; e < ne; ++e) {
-    if (out.edge_first_node[e] < 0)
-      continue;
+  for (int edge : carrying) {
+    const std::size_t e = std::size_t(edge);
     const int va = lm.edge_vertices[e][0], vb = lm.edge_vertices[e][1];
     const Vertex_level& a = levels[std::size_t(va)];
     const Vertex_level& b = levels[std::size_t(vb)];
@@ -129,6 +152,8 @@ void compute_highlight_nodes(const Local_mesh<TriangleMesh>& lm,
 
   out.vertex_node.assign(lm.number_of_model_vertices, -1);
   for (std::size_t v = 0; v < lm.number_of_model_vertices; ++v) {
+    if (keys[v] & 1)
+      continue; // not on a level
     const Vertex_level& l = levels[v];
     if (!l.defined() || !l.on_level || !window.contains(l.level))
       continue;

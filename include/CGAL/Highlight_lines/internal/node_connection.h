@@ -32,7 +32,8 @@ struct Highlight_segments
 // levels cannot cross, and a segment is found by both faces of its nodes' edges.
 template <typename TriangleMesh>
 void connect_highlight_nodes(const Local_mesh<TriangleMesh>& lm,
-                             const std::vector<Vertex_level>& levels, const Highlight_nodes& hn,
+                             const std::vector<Vertex_level>& levels,
+                             const std::vector<long long>& keys, const Highlight_nodes& hn,
                              const Level_window& window, Highlight_segments& out)
 {
   out.segments.clear();
@@ -41,6 +42,9 @@ void connect_highlight_nodes(const Local_mesh<TriangleMesh>& lm,
 
   for (std::size_t f = 0; f < lm.number_of_model_faces; ++f) {
     const std::array<int, 3>& fv = lm.face_vertices[f];
+    const long long k0 = keys[std::size_t(fv[0])];
+    if (k0 == keys[std::size_t(fv[1])] && k0 == keys[std::size_t(fv[2])] && (k0 & 1))
+      continue; // the common case first: the three corners strictly inside one level band
     const std::array<int, 3>& fe = lm.face_edges[f];
     const Vertex_level* l[3] = {&levels[std::size_t(fv[0])], &levels[std::size_t(fv[1])],
                                 &levels[std::size_t(fv[2])]};
@@ -86,6 +90,8 @@ void connect_highlight_nodes(const Local_mesh<TriangleMesh>& lm,
 
   for (std::size_t e = 0; e < lm.edge_vertices.size(); ++e) {
     const int a = lm.edge_vertices[e][0], b = lm.edge_vertices[e][1];
+    if (keys[std::size_t(a)] != keys[std::size_t(b)] || (keys[std::size_t(a)] & 1))
+      continue; // a highlight edge has both ends on one level: equal, even keys
     const Vertex_level& la = levels[std::size_t(a)];
     const Vertex_level& lb = levels[std::size_t(b)];
     if (edge_is_usable(la, lb) && la.on_level && lb.on_level && la.level == lb.level &&
