@@ -39,11 +39,13 @@ struct Fairing_report
     double difference_energy = 0;
     /// `F = ω1 q_fair + ω2 q_diff` (eq. 15).
     double target_value = 0;
-    /// Largest |x_i| of the step taken.
+    /// Largest |x_i| of the QP's solution.
     double max_displacement = 0;
-    /// `max_displacement` divided by the mean edge length in the region (eq. 17).
+    /// `max_displacement` divided by the mean edge length in the region: the quantity of the
+    /// convergence test (eq. 17).
     double relative_max_displacement = 0;
-    /// The factor by which the solver's step was shortened to avoid flipped triangles (1: none).
+    /// The fraction of the solution actually applied: 1, or less where the full step would
+    /// have flipped a triangle (then the iteration does not count as converged).
     double step_scale = 1;
     /// Line pieces whose desired curve was found in the current highlight lines.
     std::size_t lines_targeted = 0;
@@ -77,8 +79,9 @@ struct Fairing_report
 \ingroup PkgHighlightLinesRef
 
 Thrown by `fair_with_highlight_lines()` when an iteration cannot be completed (the QP solver
-reports a failure, or no step avoids flipping a triangle). The mesh is restored to exactly
-what it was before the call. `report()` says what happened up to the failure.
+reports a failure other than reaching its iteration limit, or no step avoids flipping a
+triangle). The mesh is restored to exactly what it was before the call: the iterations listed
+in `report()`, carried out before the failure, are undone too.
 */
 class Fairing_failure : public std::runtime_error
 {

@@ -202,3 +202,63 @@ INSTANTIATE_TEST_SUITE_P(AllSharedMeshes, SharedMeshes,
                          });
 
 } // namespace
+
+#include <CGAL/Gmpq.h>
+
+namespace {
+using namespace test;
+
+// A two-face fan built so that rounding in one face's cross product flips the double sign of
+// Z·Ñ (found in review). The classification must follow the exact one-ring values: level
+// floor(d/s), side sign(Z·Ñ), nothing out of range.
+TEST(ExactClassification, FollowsExactValuesWhereDoubleNormalsAreWrong)
+{
+  Surface_mesh m;
+  const double e52 = std::ldexp(1.0, -52), e51 = std::ldexp(1.0, -51), e105 = std::ldexp(1.0, -105);
+  auto v0 = m.add_vertex(Point(0, 0, 0));
+  auto p1 = m.add_vertex(Point(1 + e52, 1, 0));
+  auto p2 = m.add_vertex(Point(1 + e51, 1 + e52, 1));
+  auto p3 = m.add_vertex(Point(0, -e105, 1));
+  m.add_face(p1, p2, v0);
+  m.add_face(p2, p3, v0);
+  const double s = 2.0 * std::ldexp(1.0, 105) / 1000.5;
+  const Lights lights(Point(0, 0, 1), Vector(1, 0, 0), Vector(0, 0, 1), s);
+  CGAL::Highlight_lines::Highlight_line_sweeper<Surface_mesh> sweeper(m);
+  std::vector<CGAL::Highlight_lines::internal::Vertex_level> levels;
+  sweeper.classify(lights, levels);
+  const auto& lm = sweeper.local_mesh();
+  typedef CGAL::Gmpq Q;
+  for (std::size_t v = 0; v < lm.number_of_model_vertices; ++v) {
+    Q n[3] = {0, 0, 0};
+    for (std::size_t f = 0; f < lm.face_vertices.size(); ++f) {
+      const auto& c = lm.face_vertices[f];
+      if (c[0] != int(v) && c[1] != int(v) && c[2] != int(v))
+        continue;
+      const double *a = lm.point(c[0]), *b = lm.point(c[1]), *d = lm.point(c[2]);
+      Q u[3], w[3];
+      for (int k = 0; k < 3; ++k) {
+        u[k] = Q(b[k]) - Q(a[k]);
+        w[k] = Q(d[k]) - Q(a[k]);
+      }
+      n[0] += u[1] * w[2] - u[2] * w[1];
+      n[1] += u[2] * w[0] - u[0] * w[2];
+      n[2] += u[0] * w[1] - u[1] * w[0];
+    }
+    const double* p = lm.point(int(v));
+    // (P - A0) x H with H = (1, 0, 0), A0 = (0, 0, 1); Z = (0, 0, 1).
+    const Q W[3] = {Q(p[0]), Q(p[1]), Q(p[2]) - Q(1)};
+    const Q num = W[2] * n[1] - W[1] * n[2], den = n[2];
+    const auto& level = levels[v];
+    ASSERT_EQ(int(level.normal_side), int(CGAL::sign(den))) << "vertex " << v;
+    if (den == 0)
+      continue;
+    const Q ratio = num / den / Q(s);
+    EXPECT_FALSE(level.out_of_range) << "vertex " << v;
+    // floor(ratio) == level  <=>  level <= ratio < level + 1
+    EXPECT_TRUE(Q(double(level.level)) <= ratio && ratio < Q(double(level.level + 1)))
+        << "vertex " << v << ": level " << level.level << ", exact d/s " << CGAL::to_double(ratio);
+    EXPECT_EQ(level.on_level, ratio == Q(double(level.level)));
+  }
+}
+
+} // namespace

@@ -84,6 +84,9 @@ Pieces_found find_line_pieces(const Model& model, const Fairing_region& region)
         ++found.lines_ending_inside;
       continue;
     }
+    // An open line that starts inside R enters R from its end and gets no target there.
+    if (!line.closed && inside[0])
+      ++found.lines_ending_inside;
     // Walk from an outside node; a closed line is walked around once, cyclically.
     long long first = 0;
     if (line.closed)

@@ -140,7 +140,12 @@ public:
       }
       std::vector<double> x(n, 0.0);
       step.solver = solver_.solve(x.begin());
-      if (!step.solver.is_optimal()) {
+      // A solver that ran out of iterations still returns a feasible, improved point: use it.
+      const bool usable =
+          step.solver.is_optimal() ||
+          (step.solver.status == Box_QP_status::ITERATION_LIMIT &&
+           std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); }));
+      if (!usable) {
         report.history.push_back(step);
         throw Fairing_failure("fair_with_highlight_lines(): the QP solver failed at iteration " +
                                   std::to_string(iteration + 1) + ": " + step.solver.message,
@@ -149,8 +154,8 @@ public:
       step.step_scale = move_without_flips(x, directions, report);
       double max_x = 0;
       for (double xi : x)
-        max_x = (std::max)(max_x, std::abs(xi) * step.step_scale);
-      step.max_displacement = max_x;
+        max_x = (std::max)(max_x, std::abs(xi));
+      step.max_displacement = max_x; // of the QP solution; the move applied is step_scale times it
       step.relative_max_displacement = max_x / mean_edge_length_;
       report.history.push_back(step);
       report.iterations = iteration + 1;
@@ -160,7 +165,8 @@ public:
         report.status = Fairing_report::Status::STOPPED_BY_VISITOR;
         break;
       }
-      if (step.relative_max_displacement < options_.convergence_threshold) {
+      // Eq. 17 on the solution itself: a step shortened against a flip is no convergence.
+      if (step.step_scale == 1 && step.relative_max_displacement < options_.convergence_threshold) {
         report.status = Fairing_report::Status::CONVERGED;
         break;
       }
@@ -286,7 +292,8 @@ private:
   // (eq. 14).
   std::vector<Matched_piece> match_desired_lines() const
   {
-    std::map<Node_key, std::pair<std::size_t, std::size_t>> where; // key -> (line, position)
+    // key -> (line, position); a node where lines meet (degree > 2) is in several lines
+    std::multimap<Node_key, std::pair<std::size_t, std::size_t>> where;
     std::set<Node_key> wanted;
     for (const Desired_line& d : desired_)
       wanted.insert(d.start);
@@ -295,41 +302,43 @@ private:
       for (std::size_t i = 0; i < lines[l].nodes.size(); ++i) {
         const Node_key key = Node_key::of(model_.node(std::size_t(lines[l].nodes[i])));
         if (wanted.count(key))
-          where[key] = {l, i};
+          where.emplace(key, std::make_pair(l, i));
       }
+    // The piece from position `start` of `line` to the node d.end through nodes inside R.
+    auto walk = [&](const Desired_line& d, const Traced_line& line, std::size_t start,
+                    int direction, Matched_piece& piece) {
+      const long long n = (long long)line.nodes.size();
+      piece.nodes.assign(1, line.nodes[start]);
+      for (long long k = 1; k <= n; ++k) {
+        long long pos = (long long)start + direction * k;
+        if (line.closed)
+          pos = ((pos % n) + n) % n;
+        else if (pos < 0 || pos >= n)
+          return false;
+        const int id = line.nodes[std::size_t(pos)];
+        piece.nodes.push_back(id);
+        const Raw_node& node = model_.node(std::size_t(id));
+        if (Node_key::of(node) == d.end)
+          return piece.nodes.size() > 2;
+        if (!node_is_inside(node, region_))
+          return false;
+      }
+      return false;
+    };
     std::vector<Matched_piece> matched;
     for (const Desired_line& d : desired_) {
-      auto it = where.find(d.start);
-      if (it == where.end())
-        continue;
-      const Traced_line& line = lines[it->second.first];
-      const long long n = (long long)line.nodes.size();
-      for (int direction : {1, -1}) {
-        Matched_piece piece;
-        piece.nodes.push_back(line.nodes[it->second.second]);
-        bool found = false;
-        for (long long k = 1; k < n + 1; ++k) {
-          long long pos = (long long)it->second.second + direction * k;
-          if (line.closed)
-            pos = ((pos % n) + n) % n;
-          else if (pos < 0 || pos >= n)
-            break;
-          const int id = line.nodes[std::size_t(pos)];
-          piece.nodes.push_back(id);
-          const Raw_node& node = model_.node(std::size_t(id));
-          if (Node_key::of(node) == d.end) {
-            found = true;
+      const auto occurrences = where.equal_range(d.start);
+      bool done = false;
+      for (auto it = occurrences.first; it != occurrences.second && !done; ++it)
+        for (int direction : {1, -1}) {
+          Matched_piece piece;
+          if (walk(d, lines[it->second.first], it->second.second, direction, piece)) {
+            complete_piece(d, piece);
+            matched.push_back(std::move(piece));
+            done = true;
             break;
           }
-          if (!node_is_inside(node, region_))
-            break;
         }
-        if (found && piece.nodes.size() > 2) {
-          complete_piece(d, piece);
-          matched.push_back(std::move(piece));
-          break;
-        }
-      }
     }
     return matched;
   }

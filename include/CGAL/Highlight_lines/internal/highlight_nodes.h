@@ -11,6 +11,7 @@
 #include <array>
 #include <cstddef>
 #include <limits>
+#include <stdexcept>
 #include <vector>
 
 namespace CGAL {
@@ -122,6 +123,10 @@ void compute_highlight_nodes(const Local_mesh<TriangleMesh>& lm,
       ++out.number_of_capped_edges;
       continue;
     }
+    if (last - first + 1 > (std::numeric_limits<int>::max)() - next_id)
+      throw std::length_error("highlight line model: more than 2^31 nodes; restrict it with "
+                              "the level_range or face_range named parameters, or raise the "
+                              "spacing");
     out.edge_first_node[e] = next_id;
     next_id += int(last - first + 1);
     carrying.push_back(int(e));

@@ -65,6 +65,7 @@ private:
   struct Terms
   {
     double num = 0, num_magnitude = 0, den = 0, den_magnitude = 0, depth = 0;
+    bool trusted = true;
   };
 
 public:
@@ -95,10 +96,13 @@ public:
     t.den = z_[0] * n[0] + z_[1] * n[1] + z_[2] * n[2];
     t.den_magnitude = std::abs(z_[0]) * nm[0] + std::abs(z_[1]) * nm[1] + std::abs(z_[2]) * nm[2];
     t.depth = double(vn_.valence[std::size_t(v)] + 16);
+    // Face cross products in the subnormal range carry absolute errors the relative bound
+    // does not cover: decide such vertices with intervals and exact arithmetic.
+    t.trusted = nm[0] + nm[1] + nm[2] > 1e-280;
 
     // Side of the light plane the normal points to.
     const double den_bound = t.depth * error_per_operation * t.den_magnitude;
-    if (std::abs(t.den) > den_bound && den_bound > min_magnitude)
+    if (t.trusted && std::abs(t.den) > den_bound && den_bound > min_magnitude)
       result.normal_side = t.den > 0 ? 1 : -1;
     else {
       ++stats.static_filter_failures;
@@ -107,33 +111,66 @@ public:
         return result;
     }
 
+    // Find k with d - k·s >= 0 > d - (k+1)·s, deciding every comparison exactly. The double
+    // estimate q is almost always right (two evaluations); where it is not (the double Ñ was
+    // inaccurate), a galloping search and a bisection find k from the exact signs alone.
     const double d = t.num / t.den;
     const double q = d / s_;
-    if (!(std::abs(q) < 1125899906842624.0)) { // 2^50: also catches inf and NaN
-      result.out_of_range = true;
-      return result;
+    const long long limit = 1LL << 50; // beyond: normal almost parallel to S, levels unusable
+    auto sign_of_d_minus = [&](long long m) { // sign(d - m·s)
+      return result.normal_side * sign_of_E(v, t, m, stats);
+    };
+    long long k = std::isfinite(q) ? static_cast<long long>(std::floor((std::max)(
+                                         -double(limit), (std::min)(double(limit - 1), q))))
+                                   : 0;
+    long long lo, hi; // sign(d - lo·s) >= 0 > sign(d - hi·s)
+    int sign_at_lo;
+    const int sign_at_k = sign_of_d_minus(k);
+    if (sign_at_k >= 0) {
+      lo = k;
+      sign_at_lo = sign_at_k;
+      hi = k + 1;
+      for (long long step = 2;; step *= 2) {
+        const int sign_at_hi = sign_of_d_minus(hi);
+        if (sign_at_hi < 0)
+          break;
+        if (hi >= limit) {
+          result.out_of_range = true;
+          return result;
+        }
+        lo = hi;
+        sign_at_lo = sign_at_hi;
+        hi = (std::min)(k + step, limit);
+      }
+    } else {
+      hi = k;
+      lo = k - 1;
+      for (long long step = 2;; step *= 2) {
+        sign_at_lo = sign_of_d_minus(lo);
+        if (sign_at_lo >= 0)
+          break;
+        if (lo <= -limit) {
+          result.out_of_range = true;
+          return result;
+        }
+        hi = lo;
+        lo = (std::max)(k - step, -limit);
+      }
     }
-    long long k = static_cast<long long>(std::floor(q));
-    // Find k with d - k·s >= 0 and d - (k+1)·s < 0; q is accurate, so this moves k at most once.
-    for (int guard = 0; guard < 64; ++guard) {
-      const int below = result.normal_side * sign_of_E(v, t, k, stats); // sign(d - k·s)
-      if (below < 0) {
-        --k;
-        continue;
+    while (hi - lo > 1) {
+      const long long mid = lo + (hi - lo) / 2;
+      const int sign_at_mid = sign_of_d_minus(mid);
+      if (sign_at_mid >= 0) {
+        lo = mid;
+        sign_at_lo = sign_at_mid;
+      } else {
+        hi = mid;
       }
-      if (below == 0) {
-        result.on_level = true;
-        break;
-      }
-      const int above = result.normal_side * sign_of_E(v, t, k + 1, stats); // sign(d - (k+1)·s)
-      if (above >= 0) {
-        ++k;
-        continue;
-      }
-      break;
     }
+    k = lo;
+    result.on_level = sign_at_lo == 0;
     result.level = k;
-    result.distance = result.on_level ? double(k) * s_ : d;
+    result.distance = result.on_level ? double(k) * s_ : (std::isfinite(d) ? d : double(k) * s_);
     return result;
   }
 
@@ -147,7 +184,7 @@ private:
     const double e = t.num - ms * t.den;
     const double magnitude = t.num_magnitude + std::abs(ms) * t.den_magnitude;
     const double bound = t.depth * error_per_operation * magnitude;
-    if (std::abs(e) > bound && bound > min_magnitude && std::isfinite(bound))
+    if (t.trusted && std::abs(e) > bound && bound > min_magnitude && std::isfinite(bound))
       return e > 0 ? 1 : -1;
     ++stats.static_filter_failures;
     return exact_sign(v, &m, stats);

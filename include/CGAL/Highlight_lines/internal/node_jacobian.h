@@ -147,7 +147,7 @@ public:
 
 private:
   const Fairing_region& region_;
-  const std::vector<Vec3>& directions_;
+  std::vector<Vec3> directions_; // a copy: callers may pass a temporary
   Vec3 a_, h_, z_;
   std::function<Vec3(int)> point_, normal_;
   std::function<std::array<int, 3>(int)> corners_;
