@@ -45,7 +45,7 @@ enum class Box_QP_status {
 
 /*!
 \ingroup PkgHighlightLinesRef
-returns the name of the enumerator, e.g. `"OPTIMAL"`.
+returns the name of the enumerator, such as `"OPTIMAL"`.
 */
 inline const char* to_string(Box_QP_status status)
 {

@@ -53,6 +53,7 @@ struct Fairing_report
     Box_QP_report solver;
   };
 
+  /// How the iteration ended.
   Status status = Status::ITERATION_LIMIT;
   /// Number of iterations carried out.
   std::size_t iterations = 0;
@@ -86,10 +87,12 @@ in `report()`, carried out before the failure, are undone too.
 class Fairing_failure : public std::runtime_error
 {
 public:
+  /// Creates the exception with the text returned by `what()` and the report so far.
   Fairing_failure(const std::string& message, const Fairing_report& report)
       : std::runtime_error(message), report_(report)
   {
   }
+  /// The report of the iterations up to the failure.
   const Fairing_report& report() const { return report_; }
 
 private:

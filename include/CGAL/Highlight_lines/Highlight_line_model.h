@@ -43,8 +43,11 @@ template <typename TriangleMesh, typename GeomTraits>
 class Highlight_line_model
 {
 public:
+  /// The vertex descriptor of the mesh.
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  /// The halfedge descriptor of the mesh.
   typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  /// The point type of the kernel.
   typedef typename GeomTraits::Point_3 Point_3;
 
   /// A highlight node.

@@ -53,7 +53,9 @@ template <typename TriangleMesh,
 class Highlight_line_sweeper
 {
 public:
+  /// The type of the models computed.
   typedef Highlight_line_model<TriangleMesh, GeomTraits> Model;
+  /// The type of the light setups.
   typedef Light_setup<GeomTraits> Lights;
 
   /*!

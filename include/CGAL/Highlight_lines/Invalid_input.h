@@ -41,6 +41,8 @@ public:
   /// Returned by `element()` when the problem is not attached to one mesh element.
   static constexpr std::size_t no_element = (std::numeric_limits<std::size_t>::max)();
 
+  /// Creates the exception for `problem`, with the text returned by `what()` and the index of
+  /// the offending element, if there is one.
   Invalid_input(Problem problem, const std::string& message, std::size_t element = no_element)
       : std::invalid_argument(message), problem_(problem), element_(element)
   {

@@ -41,9 +41,13 @@ template <typename GeomTraits>
 class Light_setup
 {
 public:
+  /// The kernel, `GeomTraits`.
   typedef GeomTraits Geom_traits;
+  /// The number type of the kernel.
   typedef typename GeomTraits::FT FT;
+  /// The point type of the kernel.
   typedef typename GeomTraits::Point_3 Point_3;
+  /// The vector type of the kernel.
   typedef typename GeomTraits::Vector_3 Vector_3;
 
   /*!

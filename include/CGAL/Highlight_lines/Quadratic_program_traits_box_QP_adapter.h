@@ -53,8 +53,8 @@ private:
 /*!
 \ingroup PkgHighlightLinesRef
 
-Makes a model of CGAL's `QuadraticProgramTraits` (e.g. `CGAL::OSQP_quadratic_program_traits`)
-a model of `BoxConstrainedQuadraticProgramSolver`.
+Makes a model of CGAL's `QuadraticProgramTraits`, such as
+`CGAL::OSQP_quadratic_program_traits`, a model of `BoxConstrainedQuadraticProgramSolver`.
 
 The adapter gathers the problem with the accumulating semantics of the concept, checks it
 like the built-in solver does (`INVALID_INPUT`, `INFEASIBLE_BOUNDS`, and `NOT_CONVEX` for a

@@ -72,7 +72,7 @@ OutputIterator movable_vertices(const TriangleMesh& tm, const FaceRange& region,
 \ingroup PkgHighlightLinesRef
 
 Writes the desired highlight lines of a fairing region (§3.2, the blue curves of the paper's
-Fig. 7b): for each part of a highlight line crossing the region, the OGH curve between its
+figure 7b): for each part of a highlight line crossing the region, the OGH curve between its
 delimiting nodes, sampled at `samples` points evenly spaced in arc length, as a
 `std::vector<Point_3>`.
 

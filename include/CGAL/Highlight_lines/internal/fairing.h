@@ -466,7 +466,7 @@ private:
       }
       return scale;
     }
-    throw Fairing_failure("fair_with_highlight_lines(): every step, down to 1/4096 of the "
+    throw Fairing_failure("fair_with_highlight_lines(): every step, down to 1/2048 of the "
                           "solver's, would flip a triangle",
                           report);
   }
