@@ -201,10 +201,7 @@ public:
   void compute_raw(const Lights& lights, const internal::Level_window& window,
                    bool facing_side_only, Raw_model& out) const
   {
-    classify(lights, out.levels);
-    if (facing_side_only)
-      for (internal::Vertex_level& level : out.levels)
-        level.turned_away = level.normal_side < 0;
+    classify(lights, out.levels, facing_side_only);
     internal::compute_level_keys(out.levels, out.keys);
     internal::compute_highlight_nodes(mesh_, out.levels, out.keys, lights.spacing_value(), window,
                                       out.nodes);
@@ -238,14 +235,15 @@ public:
         CGAL::parameters::get_parameter(np, internal_np::facing_side_only), false);
   }
 
-  void classify(const Lights& lights, std::vector<internal::Vertex_level>& levels) const
+  void classify(const Lights& lights, std::vector<internal::Vertex_level>& levels,
+                bool facing_side_only = false) const
   {
     const internal::Level_classifier<TriangleMesh> classifier(
         mesh_, normals_, lights.base_point_array(), lights.light_direction_array(),
         lights.plane_normal_array(), lights.spacing_value());
     levels.resize(mesh_.number_of_model_vertices);
     for (std::size_t v = 0; v < mesh_.number_of_model_vertices; ++v)
-      levels[v] = classifier.classify(int(v), statistics_);
+      levels[v] = classifier.classify(int(v), statistics_, facing_side_only);
   }
   /// \endcond
 

@@ -166,17 +166,25 @@ void build_whole_local_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIn
       table.resize(key + 1, -1);
   };
 
+  // Vertices and edges are numbered in the order the faces first reach them: neighbouring
+  // elements get nearby ids, which keeps the per-sweep passes over edges and faces, with their
+  // reads of per-vertex data, cache friendly.
   lm.vertex_handles.reserve(num_vertices(tm));
   lm.vertex_indices.reserve(num_vertices(tm));
   lm.xyz.reserve(3 * num_vertices(tm));
-  for (typename GT::vertex_descriptor v : vertices(tm)) {
-    if (halfedge(v, tm) == GT::null_halfedge())
-      continue; // isolated: not part of the surface
+  lm.edge_halfedges.reserve(num_edges(tm));
+  lm.edge_vertices.reserve(num_edges(tm));
+  lm.face_handles.reserve(num_faces(tm));
+  lm.face_indices.reserve(num_faces(tm));
+  lm.face_vertices.reserve(num_faces(tm));
+  lm.face_edges.reserve(num_faces(tm));
+  lm.face_ids = Compact_ids(true, num_faces(tm));
+
+  auto vertex = [&](typename GT::vertex_descriptor v) {
     const std::size_t key = std::size_t(get(vim, v));
     grow(vertex_id, key);
-    vertex_id[key] = int(lm.vertex_handles.size());
-    lm.vertex_handles.push_back(v);
-    lm.vertex_indices.push_back(key);
+    if (vertex_id[key] >= 0)
+      return vertex_id[key];
     const auto& p = get(vpm, v);
     const double c[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
     if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2]))
@@ -184,18 +192,18 @@ void build_whole_local_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIn
                           "vertex " + std::to_string(key) + " has a non-finite coordinate " +
                               describe_point(c),
                           key);
+    vertex_id[key] = int(lm.vertex_handles.size());
+    lm.vertex_handles.push_back(v);
+    lm.vertex_indices.push_back(key);
     lm.xyz.insert(lm.xyz.end(), c, c + 3);
-  }
-  lm.number_of_model_vertices = lm.vertex_handles.size();
-
-  lm.edge_halfedges.reserve(num_edges(tm));
-  lm.edge_vertices.reserve(num_edges(tm));
-  for (auto e : edges(tm)) {
-    typename GT::halfedge_descriptor h = halfedge(e, tm);
-    int a = vertex_id[std::size_t(get(vim, source(h, tm)))];
-    int b = vertex_id[std::size_t(get(vim, target(h, tm)))];
-    const std::size_t h_key = std::size_t(get(him, h)),
-                      o_key = std::size_t(get(him, opposite(h, tm)));
+    return vertex_id[key];
+  };
+  auto edge = [&](typename GT::halfedge_descriptor h, int a, int b) {
+    const std::size_t h_key = std::size_t(get(him, h));
+    grow(halfedge_edge, h_key);
+    if (halfedge_edge[h_key] >= 0)
+      return halfedge_edge[h_key];
+    const std::size_t o_key = std::size_t(get(him, opposite(h, tm)));
     // Canonical direction, from the lexicographically smaller point, so that node positions
     // do not depend on which face saw an edge first.
     if (lexicographically_smaller(lm.point(b), lm.point(a)) ||
@@ -204,33 +212,29 @@ void build_whole_local_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIn
       std::swap(a, b);
       h = opposite(h, tm);
     }
-    grow(halfedge_edge, (std::max)(h_key, o_key));
+    grow(halfedge_edge, o_key);
     halfedge_edge[h_key] = halfedge_edge[o_key] = int(lm.edge_halfedges.size());
     lm.edge_halfedges.push_back(h);
     lm.edge_vertices.push_back({a, b});
-  }
+    return halfedge_edge[h_key];
+  };
 
-  lm.face_handles.reserve(num_faces(tm));
-  lm.face_indices.reserve(num_faces(tm));
-  lm.face_vertices.reserve(num_faces(tm));
-  lm.face_edges.reserve(num_faces(tm));
-  lm.face_ids = Compact_ids(true, num_faces(tm));
   for (typename GT::face_descriptor f : faces(tm)) {
-    const typename GT::halfedge_descriptor h0 = halfedge(f, tm), h1 = next(h0, tm),
-                                           h2 = next(h1, tm);
-    if (next(h2, tm) != h0)
+    const typename GT::halfedge_descriptor h[3] = {halfedge(f, tm), next(halfedge(f, tm), tm),
+                                                   next(next(halfedge(f, tm), tm), tm)};
+    if (next(h[2], tm) != h[0])
       throw_non_triangle<TriangleMesh>(fim, f);
     bool inserted = false;
     lm.face_ids.insert(std::size_t(get(fim, f)), int(lm.face_handles.size()), inserted);
     lm.face_handles.push_back(f);
     lm.face_indices.push_back(std::size_t(get(fim, f)));
-    lm.face_vertices.push_back({vertex_id[std::size_t(get(vim, source(h0, tm)))],
-                                vertex_id[std::size_t(get(vim, source(h1, tm)))],
-                                vertex_id[std::size_t(get(vim, source(h2, tm)))]});
-    lm.face_edges.push_back({halfedge_edge[std::size_t(get(him, h0))],
-                             halfedge_edge[std::size_t(get(him, h1))],
-                             halfedge_edge[std::size_t(get(him, h2))]});
+    const std::array<int, 3> corners = {vertex(source(h[0], tm)), vertex(source(h[1], tm)),
+                                        vertex(source(h[2], tm))};
+    lm.face_vertices.push_back(corners);
+    lm.face_edges.push_back({edge(h[0], corners[0], corners[1]), edge(h[1], corners[1], corners[2]),
+                             edge(h[2], corners[2], corners[0])});
   }
+  lm.number_of_model_vertices = lm.vertex_handles.size();
   lm.number_of_model_faces = lm.face_handles.size();
   lm.mesh = &tm;
   lm.face_index = [fim](typename GT::face_descriptor f) { return std::size_t(get(fim, f)); };

@@ -75,11 +75,13 @@ inline int node_on_edge(const Highlight_nodes& hn, int e, const Vertex_level& a,
 // between d1 and d2, at Q = V1 + t (V2 - V1), t = (m·s - d1) / (d2 - d1). Which levels lie
 // strictly between is read from the exact vertex classes, never from the rounded d values.
 // A compact sort key of a vertex class, so that the hot loops over edges and faces read 8
-// bytes per vertex: 2k + 1 when k·s < d < (k+1)·s, 2k when d = k·s; a sentinel when d is
-// undefined. Two ends with equal keys have no level strictly between them.
+// bytes per vertex: 2k + 1 when k·s < d < (k+1)·s, 2k when d = k·s; an odd sentinel when d
+// is undefined. Two ends with equal keys have no level strictly between them.
 inline long long level_key(const Vertex_level& l)
 {
-  return l.defined() ? 2 * l.level + (l.on_level ? 0 : 1) : (std::numeric_limits<long long>::min)();
+  // The sentinel is odd: faces and edges with undefined ends take the quick rejections.
+  return l.defined() ? 2 * l.level + (l.on_level ? 0 : 1)
+                     : (std::numeric_limits<long long>::min)() + 1;
 }
 
 inline void compute_level_keys(const std::vector<Vertex_level>& levels,

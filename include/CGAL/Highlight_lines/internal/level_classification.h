@@ -76,7 +76,10 @@ public:
   {
   }
 
-  Vertex_level classify(int v, Classification_statistics& stats) const
+  // With facing_side_only, a vertex whose normal points away from the light plane is only
+  // marked turned_away: its level is not needed.
+  Vertex_level classify(int v, Classification_statistics& stats,
+                        bool facing_side_only = false) const
   {
     Vertex_level result;
     const double* p = lm_.point(v);
@@ -109,6 +112,10 @@ public:
       result.normal_side = signed_char(exact_sign(v, nullptr, stats));
       if (result.normal_side == 0)
         return result;
+    }
+    if (facing_side_only && result.normal_side < 0) {
+      result.turned_away = true;
+      return result;
     }
 
     // Find k with d - k·s >= 0 > d - (k+1)·s, deciding every comparison exactly. The double
