@@ -136,6 +136,10 @@ the fairing} \cgalParamDefault{none} \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::neighborhood_rings} \cgalParamDescription{rings of
 faces around the region on which highlight lines are recomputed (the tangents are estimated there)}
       \cgalParamDefault{3} \cgalParamNEnd
+    \cgalParamNBegin{Highlight_lines::parameters::keep_completed_iterations}
+\cgalParamDescription{on a failure (an exception from the solver's report, the visitor or the point
+map), leave the mesh as after the last completed iteration instead of restoring it to what it was
+before the call} \cgalParamDefault{`false`} \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::level_range, max_levels_per_edge}
 \cgalParamDescription{as for `compute_highlight_lines()`} \cgalParamNEnd \cgalNamedParamsEnd
 
@@ -145,8 +149,10 @@ faces around the region on which highlight lines are recomputed (the tangents ar
 without movable vertex, a non-triangle or degenerate face or a non-finite coordinate around
 the region, or an invalid parameter; the mesh is untouched.
 \throws Highlight_lines::Fairing_failure if the solver fails or no step avoids flipping a
-triangle; the mesh is restored to exactly what it was before the call. Any exception thrown
-by the visitor or the property maps also restores the mesh before it propagates.
+triangle; the mesh is restored to exactly what it was before the call (or, with
+`keep_completed_iterations(true)`, to what it was after the last completed iteration). Any
+exception thrown by the visitor or the property maps restores the mesh in the same way before it
+propagates.
 */
 template <typename TriangleMesh, typename FaceRange, typename GeomTraits,
           typename NamedParameters = parameters::Default_named_parameters>
@@ -215,10 +221,12 @@ fair_with_highlight_lines(TriangleMesh& tm, const FaceRange& region,
     const vertex_descriptor vd = fairing.sweeper().local_mesh().vertex_handles[std::size_t(v)];
     saved.emplace_back(vd, get(vpm, vd));
   }
+  const bool keep_completed =
+      choose_parameter(get_parameter(np, HL::internal_np::keep_completed_iterations), false);
   try {
     return fairing.run(std::function<bool(const HL::Fairing_report::Iteration&)>(visitor));
   } catch (...) {
-    for (const auto& entry : saved)
+    for (const auto& entry : keep_completed ? fairing.checkpoint() : saved)
       put(vpm, entry.first, entry.second);
     throw;
   }

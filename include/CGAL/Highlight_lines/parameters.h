@@ -24,6 +24,7 @@ enum convergence_threshold_t { convergence_threshold };
 enum qp_solver_t { qp_solver };
 enum fairing_visitor_t { fairing_visitor };
 enum neighborhood_rings_t { neighborhood_rings };
+enum keep_completed_iterations_t { keep_completed_iterations };
 } // namespace internal_np
 /// \endcond
 
@@ -80,6 +81,7 @@ CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(convergence_threshold_t, convergence_thresh
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(qp_solver_t, qp_solver)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(fairing_visitor_t, fairing_visitor)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(neighborhood_rings_t, neighborhood_rings)
+CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(keep_completed_iterations_t, keep_completed_iterations)
 
 #undef CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER
 

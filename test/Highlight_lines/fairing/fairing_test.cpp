@@ -12,6 +12,7 @@
 #include <cmath>
 #include <map>
 #include <random>
+#include <memory>
 #include <set>
 
 namespace {
@@ -476,6 +477,68 @@ TEST(FairingBuildingBlocks, MovableVerticesAndDesiredLinesAgreeWithTheFairing)
                   0.05 * std::sqrt(a.squared_length()));
     }
   }
+}
+
+} // namespace
+
+namespace {
+using namespace test;
+namespace HL = CGAL::Highlight_lines;
+namespace HLP = CGAL::Highlight_lines::parameters;
+
+TEST(TransactionalFairing, KeepCompletedIterationsLeavesTheLastCompletedState)
+{
+  const Dented_hood d = dented_hood(30);
+  Surface_mesh reference = to_mesh<Surface_mesh>(d.dented);
+  const auto region = disk_region(reference, 1.5 * d.radius);
+  CGAL::fair_with_highlight_lines(reference, region, hood_lights,
+                                  CGAL::parameters::number_of_iterations(2));
+
+  Surface_mesh mesh = to_mesh<Surface_mesh>(d.dented);
+  Failing_solver solver;
+  solver.fail_at = 3;
+  try {
+    CGAL::fair_with_highlight_lines(
+        mesh, region, hood_lights,
+        HLP::combine(HLP::qp_solver(std::ref(solver)), HLP::keep_completed_iterations(true)));
+    ADD_FAILURE() << "no exception";
+  } catch (const HL::Fairing_failure& e) {
+    EXPECT_EQ(e.report().iterations, 2u);
+  }
+  EXPECT_EQ(points_of(mesh), points_of(reference));
+  EXPECT_NE(points_of(mesh), points_of(to_mesh<Surface_mesh>(d.dented)));
+}
+
+// A point map that throws on its n-th write: the mesh must still come back exactly.
+struct Throwing_point_map
+{
+  typedef Surface_mesh::Vertex_index key_type;
+  typedef Point value_type;
+  typedef const Point& reference;
+  typedef boost::read_write_property_map_tag category;
+  Surface_mesh* mesh;
+  std::shared_ptr<int> writes_left;
+  friend reference get(const Throwing_point_map& m, key_type v) { return m.mesh->point(v); }
+  friend void put(const Throwing_point_map& m, key_type v, const value_type& p)
+  {
+    if ((*m.writes_left)-- == 0)
+      throw std::runtime_error("point map write failed");
+    m.mesh->point(v) = p;
+  }
+};
+
+TEST(TransactionalFairing, PointMapFailureRestoresTheMesh)
+{
+  const Dented_hood d = dented_hood(30);
+  Surface_mesh mesh = to_mesh<Surface_mesh>(d.dented);
+  const std::vector<Point> before = points_of(mesh);
+  const auto region = disk_region(mesh, 1.5 * d.radius);
+  Throwing_point_map vpm{&mesh, std::make_shared<int>(150)}; // fails during the 2nd or 3rd step
+  EXPECT_THROW(CGAL::fair_with_highlight_lines(mesh, region, hood_lights,
+                                               CGAL::parameters::vertex_point_map(vpm)),
+               std::runtime_error);
+  *vpm.writes_left = 1 << 30;
+  EXPECT_EQ(points_of(mesh), before);
 }
 
 } // namespace

@@ -105,6 +105,7 @@ public:
     make_targets(report);
 
     for (std::size_t iteration = 0;; ++iteration) {
+      take_checkpoint();
       Fairing_report::Iteration step;
       const std::size_t n = region_.movable.size();
       solver_.resize(n);
@@ -158,10 +159,11 @@ public:
       step.max_displacement = max_x; // of the QP solution; the move applied is step_scale times it
       step.relative_max_displacement = max_x / mean_edge_length_;
       report.history.push_back(step);
-      report.iterations = iteration + 1;
       sweeper_.update_positions();
       compute_model();
-      if (!visitor(step)) {
+      const bool go_on = visitor(step);
+      report.iterations = iteration + 1; // completed: the visitor returned
+      if (!go_on) {
         report.status = Fairing_report::Status::STOPPED_BY_VISITOR;
         break;
       }
@@ -194,6 +196,9 @@ public:
     desired_.clear();
     make_desired_lines(report);
   }
+
+  // The movable vertices' points at the start of the current iteration.
+  const std::vector<std::pair<vertex_descriptor, Point>>& checkpoint() const { return checkpoint_; }
 
   const Fairing_region& region() const { return region_; }
   const Sweeper& sweeper() const { return sweeper_; }
@@ -246,6 +251,15 @@ private:
   }
 
   void compute_model() { sweeper_.compute_raw(lights_, options_.window, false, model_); }
+
+  void take_checkpoint()
+  {
+    checkpoint_.clear();
+    for (int v : region_.movable) {
+      const vertex_descriptor vd = sweeper_.local_mesh().vertex_handles[std::size_t(v)];
+      checkpoint_.emplace_back(vd, get(vpm_, vd));
+    }
+  }
 
   Vec3 node_point(int id) const
   {
@@ -480,6 +494,7 @@ private:
   Fairing_region region_;
   Raw_model model_;
   std::vector<Desired_line> desired_;
+  std::vector<std::pair<vertex_descriptor, Point>> checkpoint_;
   double mean_edge_length_ = 1, length_scale_ = 1;
 };
 
