@@ -1,0 +1,230 @@
+// Active_set_box_QP_solver on large fairing-like problems (a bi-Laplacian on a grid with
+// irregular weights, bounds that vary per variable), whose solution is known by construction:
+// KKT conditions, agreement with the known solution, warm starts, reuse of the solver.
+
+#include <CGAL/Highlight_lines/Active_set_box_QP_solver.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <random>
+#include <vector>
+
+namespace {
+
+using CGAL::Highlight_lines::Active_set_box_QP_solver;
+using CGAL::Highlight_lines::Box_QP_report;
+using CGAL::Highlight_lines::Box_QP_status;
+using Sparse_matrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+// Q = W^T M^-1 W for the weighted Laplacian W of an m x m grid (with diagonals, random edge
+// weights, Dirichlet boundary) and random "areas" M; bounds |x_i| <= b_i with b_i varying.
+struct Grid_problem
+{
+  int m = 0, n = 0;
+  Sparse_matrix Q;
+  Eigen::VectorXd bound;
+
+  explicit Grid_problem(int side, unsigned seed) : m(side), n(side * side)
+  {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> weight(0.5, 1.5);
+    std::vector<Eigen::Triplet<double>> entries;
+    Eigen::VectorXd degree = Eigen::VectorXd::Zero(n);
+    const auto id = [side](int i, int j) { return i * side + j; };
+    for (int i = 0; i < side; ++i)
+      for (int j = 0; j < side; ++j) {
+        const int neighbours[3][2] = {{i + 1, j}, {i, j + 1}, {i + 1, j + 1}};
+        for (const auto& nb : neighbours) {
+          const double w = weight(random);
+          degree[id(i, j)] += w;
+          if (nb[0] < side && nb[1] < side) {
+            degree[id(nb[0], nb[1])] += w;
+            entries.emplace_back(id(i, j), id(nb[0], nb[1]), -w);
+            entries.emplace_back(id(nb[0], nb[1]), id(i, j), -w);
+          }
+        }
+      }
+    for (int k = 0; k < n; ++k)
+      entries.emplace_back(k, k, degree[k] + 1e-3);
+    Sparse_matrix W(n, n);
+    W.setFromTriplets(entries.begin(), entries.end());
+    Eigen::VectorXd inverse_area(n);
+    for (int k = 0; k < n; ++k)
+      inverse_area[k] = weight(random);
+    Q = Sparse_matrix(W.transpose()) * inverse_area.asDiagonal() * W;
+    Q.makeCompressed();
+    bound.resize(n);
+    for (int k = 0; k < n; ++k)
+      bound[k] = 0.5 * weight(random) / side;
+  }
+};
+
+// The linear term whose minimiser is the smooth field a * s clamped to the bounds, with
+// positive multipliers on the clamped variables; a is chosen so that the given fraction of
+// the bounds is active.
+struct Known_solution
+{
+  Eigen::VectorXd c, x;
+  std::size_t active = 0;
+
+  Known_solution(const Grid_problem& grid, double active_fraction, double phase)
+  {
+    const int n = grid.n;
+    Eigen::VectorXd field(n);
+    for (int k = 0; k < n; ++k) {
+      const double s = double(k / grid.m) / grid.m, t = double(k % grid.m) / grid.m;
+      field[k] =
+          std::sin(6. * s + phase) * std::cos(5. * t) + 0.5 * std::exp(-20. * (s - t) * (s - t));
+    }
+    std::vector<double> ratio(n);
+    for (int k = 0; k < n; ++k)
+      ratio[k] = std::abs(field[k]) / grid.bound[k];
+    // The threshold halfway between two ratios: no variable is degenerate (free on a bound).
+    std::sort(ratio.begin(), ratio.end());
+    const std::size_t first_active = std::size_t((1. - active_fraction) * n);
+    const double amplitude = 2. / (ratio[first_active - 1] + ratio[first_active]);
+    x = (amplitude * field).cwiseMax(-grid.bound).cwiseMin(grid.bound);
+    Eigen::VectorXd gradient = Eigen::VectorXd::Zero(n);
+    const Eigen::VectorXd diagonal = grid.Q.diagonal();
+    for (int k = 0; k < n; ++k) {
+      const double excess = std::abs(amplitude * field[k]) - grid.bound[k];
+      if (excess >= 0.) {
+        ++active;
+        const double multiplier = diagonal[k] * (excess + 1e-3 * grid.bound[k]);
+        gradient[k] = field[k] > 0. ? -multiplier : multiplier;
+      }
+    }
+    c = gradient - grid.Q * x;
+  }
+};
+
+struct Result
+{
+  Box_QP_report report;
+  std::vector<double> x;
+};
+
+Result solve(Active_set_box_QP_solver& solver, const Grid_problem& grid,
+             const Known_solution& problem, const std::vector<double>* warm_start = nullptr)
+{
+  solver.resize(grid.n);
+  solver.set_P(grid.Q);
+  for (int k = 0; k < grid.n; ++k) {
+    solver.set_q(k, problem.c[k]);
+    solver.set_l(k, -grid.bound[k]);
+    solver.set_u(k, grid.bound[k]);
+  }
+  if (warm_start != nullptr)
+    solver.set_warm_start(*warm_start);
+  Result result;
+  result.report = solver.solve(std::back_inserter(result.x));
+  return result;
+}
+
+// The KKT conditions, computed here independently of the solver.
+double relative_kkt_residual(const Grid_problem& grid, const Known_solution& problem,
+                             const std::vector<double>& x)
+{
+  const Eigen::Map<const Eigen::VectorXd> point(x.data(), grid.n);
+  const Eigen::VectorXd gradient = grid.Q * point + problem.c;
+  double residual = 0.;
+  for (int k = 0; k < grid.n; ++k) {
+    double projected = gradient[k];
+    if (x[k] <= -grid.bound[k])
+      projected = std::min(projected, 0.);
+    if (x[k] >= grid.bound[k])
+      projected = std::max(projected, 0.);
+    residual = std::max(residual, std::abs(projected));
+  }
+  double Q_norm = 0.;
+  for (int k = 0; k < grid.n; ++k)
+    Q_norm = std::max(Q_norm, grid.Q.col(k).cwiseAbs().sum()); // symmetric: rows = columns
+  return residual / (problem.c.cwiseAbs().maxCoeff() + Q_norm * point.cwiseAbs().maxCoeff());
+}
+
+void expect_known_solution(const Grid_problem& grid, const Known_solution& problem,
+                           const Result& result)
+{
+  ASSERT_EQ(result.report.status, Box_QP_status::OPTIMAL) << result.report.message;
+  ASSERT_EQ(result.x.size(), std::size_t(grid.n));
+  double deviation = 0.;
+  for (int k = 0; k < grid.n; ++k) {
+    ASSERT_LE(std::abs(result.x[k]), grid.bound[k]) << "variable " << k;
+    deviation = std::max(deviation, std::abs(result.x[k] - problem.x[k]));
+  }
+  EXPECT_LE(deviation, 1e-8 * grid.bound.maxCoeff());
+  EXPECT_EQ(result.report.active_bounds, problem.active);
+  EXPECT_LE(result.report.relative_kkt_residual, 1e-10);
+  EXPECT_LE(relative_kkt_residual(grid, problem, result.x), 1e-10);
+}
+
+TEST(BoxQPLargeProblems, KKTConditionsHoldOnLargeBiLaplacianProblems)
+{
+  const Grid_problem grid(150, 1);
+  for (double active_fraction : {0.05, 0.3}) {
+    SCOPED_TRACE(active_fraction);
+    const Known_solution problem(grid, active_fraction, 0.);
+    Active_set_box_QP_solver solver;
+    expect_known_solution(grid, problem, solve(solver, grid, problem));
+  }
+}
+
+TEST(BoxQPLargeProblems, WarmStartFromANearbyProblemTakesFewerIterations)
+{
+  const Grid_problem grid(120, 2);
+  const Known_solution nearby(grid, 0.15, 0.), problem(grid, 0.15, 0.02);
+  Active_set_box_QP_solver solver;
+  const Result previous = solve(solver, grid, nearby);
+  expect_known_solution(grid, nearby, previous);
+  const Result cold = solve(solver, grid, problem);
+  const Result warm = solve(solver, grid, problem, &previous.x);
+  expect_known_solution(grid, problem, cold);
+  expect_known_solution(grid, problem, warm);
+  EXPECT_LT(warm.report.iterations, cold.report.iterations);
+  EXPECT_LT(warm.report.factorizations, cold.report.factorizations);
+}
+
+TEST(BoxQPLargeProblems, ReusedSolverGivesExactlyTheResultOfAFreshOne)
+{
+  const Grid_problem grid(80, 3);
+  const Known_solution first(grid, 0.1, 0.), second(grid, 0.2, 1.);
+  Active_set_box_QP_solver reused, fresh;
+  solve(reused, grid, first);
+  const Result again = solve(reused, grid, second);
+  const Result once = solve(fresh, grid, second);
+  EXPECT_EQ(again.x, once.x);
+  EXPECT_EQ(again.report.iterations, once.report.iterations);
+}
+
+TEST(BoxQPLargeProblems, WarmStartOneBoundAwayFromTheOptimumSkipsRefactorisation)
+{
+  // Conjugate gradients preconditioned by the factorisation of the warm start's free set
+  // solve the next system when the active set changes by a single bound.
+  const Grid_problem grid(200, 4);
+  const Known_solution problem(grid, 0.1, 0.5);
+  std::vector<double> x0(problem.x.data(), problem.x.data() + grid.n);
+  for (int k = 0; k < grid.n; ++k)
+    if (std::abs(x0[k]) == grid.bound[k]) {
+      x0[k] = 0.; // free one active variable
+      break;
+    }
+  Active_set_box_QP_solver solver;
+  const Result result = solve(solver, grid, problem, &x0);
+  expect_known_solution(grid, problem, result);
+  EXPECT_EQ(result.report.iterations, 2u);
+  EXPECT_EQ(result.report.factorizations, 1u);
+}
+
+TEST(BoxQPLargeProblems, MonotonePhaseAloneSolvesAFairingLikeProblem)
+{
+  const Grid_problem grid(40, 5);
+  const Known_solution problem(grid, 0.1, 0.3);
+  Active_set_box_QP_solver solver;
+  solver.set_maximum_number_of_primal_dual_iterations(0);
+  expect_known_solution(grid, problem, solve(solver, grid, problem));
+}
+
+} // namespace

@@ -1,0 +1,180 @@
+// The sparse factorisation inside Active_set_box_QP_solver: solves like Eigen's
+// SimplicialLDLT on definite matrices, tells semidefinite and indefinite matrices apart, and
+// finds null-space directions of semidefinite ones.
+
+#include <CGAL/Highlight_lines/Active_set_box_QP_solver.h>
+
+#include <Eigen/SparseCholesky>
+#include <gtest/gtest.h>
+
+#include <numeric>
+#include <random>
+#include <vector>
+
+namespace {
+
+using CGAL::Highlight_lines::internal::Supernodal_LDLT;
+using Sparse_matrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+// A symmetric sparse matrix from random edges: the weighted graph Laplacian (semidefinite,
+// null space = constants on each connected component) plus `shift` on the diagonal.
+Sparse_matrix random_graph_matrix(std::mt19937& random, int n, int edges, double shift,
+                                  bool connected)
+{
+  std::uniform_real_distribution<double> weight(0.1, 2.);
+  std::vector<Eigen::Triplet<double>> entries;
+  const auto add_edge = [&](int a, int b) {
+    const double w = weight(random);
+    entries.emplace_back(a, b, -w);
+    entries.emplace_back(b, a, -w);
+    entries.emplace_back(a, a, w);
+    entries.emplace_back(b, b, w);
+  };
+  if (connected)
+    for (int i = 0; i + 1 < n; ++i)
+      add_edge(i, i + 1);
+  for (int e = 0; e < edges; ++e) {
+    const int a = static_cast<int>(random() % n), b = static_cast<int>(random() % n);
+    if (a != b)
+      add_edge(a, b);
+  }
+  for (int i = 0; i < n; ++i)
+    entries.emplace_back(i, i, shift);
+  Sparse_matrix A(n, n);
+  A.setFromTriplets(entries.begin(), entries.end());
+  A.makeCompressed();
+  return A;
+}
+
+std::vector<int> amd_ordering(const Sparse_matrix& A)
+{
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> permutation;
+  Eigen::AMDOrdering<int>()(A, permutation);
+  return std::vector<int>(permutation.indices().data(), permutation.indices().data() + A.rows());
+}
+
+Supernodal_LDLT::Inertia factorize(Supernodal_LDLT& ldlt, const Sparse_matrix& A,
+                                   const std::vector<int>& ordering)
+{
+  ldlt.analyze(static_cast<int>(A.rows()), A.outerIndexPtr(), A.innerIndexPtr(), ordering);
+  return ldlt.factorize(A.valuePtr(), 1e-12);
+}
+
+TEST(SupernodalLDLT, SolvesDefiniteSystemsLikeEigenSimplicialLDLT)
+{
+  std::mt19937 random(1);
+  for (int n : {1, 2, 7, 60, 500, 3000}) {
+    const Sparse_matrix A = random_graph_matrix(random, n, 3 * n, 0.05, true);
+    std::vector<int> natural(n);
+    std::iota(natural.begin(), natural.end(), 0);
+    for (const std::vector<int>& ordering : {natural, amd_ordering(A)}) {
+      Supernodal_LDLT ldlt;
+      ASSERT_EQ(factorize(ldlt, A, ordering), Supernodal_LDLT::Inertia::POSITIVE_DEFINITE);
+      const Eigen::VectorXd b = Eigen::VectorXd::Random(n);
+      Eigen::VectorXd x = b;
+      ldlt.solve(x);
+      const Eigen::VectorXd reference = Eigen::SimplicialLDLT<Sparse_matrix>(A).solve(b);
+      EXPECT_LE((A * x - b).norm(), 1e-10 * b.norm()) << "n = " << n;
+      EXPECT_LE((x - reference).norm(), 1e-8 * reference.norm()) << "n = " << n;
+      EXPECT_EQ(ldlt.number_of_zero_pivots(), 0);
+    }
+  }
+}
+
+TEST(SupernodalLDLT, RefactorisingNewValuesReusesTheAnalysis)
+{
+  std::mt19937 random(2);
+  const Sparse_matrix A = random_graph_matrix(random, 400, 1200, 0.1, true);
+  Supernodal_LDLT ldlt;
+  factorize(ldlt, A, amd_ordering(A));
+  const Sparse_matrix B = 3. * A; // same pattern, new values
+  ASSERT_EQ(ldlt.factorize(B.valuePtr(), 1e-12), Supernodal_LDLT::Inertia::POSITIVE_DEFINITE);
+  const Eigen::VectorXd b = Eigen::VectorXd::Random(400);
+  Eigen::VectorXd x = b;
+  ldlt.solve(x);
+  EXPECT_LE((B * x - b).norm(), 1e-10 * b.norm());
+}
+
+TEST(SupernodalLDLT, DetectsIndefiniteMatrices)
+{
+  std::mt19937 random(3);
+  for (int n : {2, 10, 200, 2000}) {
+    // A Laplacian minus a multiple of the identity larger than its smallest eigenvalue (0).
+    const Sparse_matrix A = random_graph_matrix(random, n, 2 * n, -0.01, true);
+    Supernodal_LDLT ldlt;
+    EXPECT_EQ(factorize(ldlt, A, amd_ordering(A)), Supernodal_LDLT::Inertia::INDEFINITE)
+        << "n = " << n;
+    EXPECT_GE(ldlt.negative_pivot(), 0);
+    EXPECT_LT(ldlt.negative_pivot(), n);
+  }
+}
+
+TEST(SupernodalLDLT, FindsTheNullSpaceOfSemidefiniteMatrices)
+{
+  std::mt19937 random(4);
+  for (int n : {3, 50, 1000}) {
+    const Sparse_matrix A = random_graph_matrix(random, n, 2 * n, 0., true);
+    Supernodal_LDLT ldlt;
+    ASSERT_EQ(factorize(ldlt, A, amd_ordering(A)), Supernodal_LDLT::Inertia::POSITIVE_SEMIDEFINITE);
+    EXPECT_EQ(ldlt.number_of_zero_pivots(), 1); // connected: the constants only
+
+    // b orthogonal to the constants: a true solution, no null-space part.
+    Eigen::VectorXd b = Eigen::VectorXd::Random(n);
+    b.array() -= b.mean();
+    Eigen::VectorXd x, null_direction;
+    ldlt.solve_with_null_space_part(b, x, null_direction);
+    EXPECT_LE((A * x - b).norm(), 1e-9 * b.norm()) << "n = " << n;
+    EXPECT_LE(null_direction.norm(), 1e-9 * x.norm()) << "n = " << n;
+
+    // b along the constants: the null-space part is a constant vector with b^T v > 0.
+    b.setOnes();
+    ldlt.solve_with_null_space_part(b, x, null_direction);
+    ASSERT_GT(b.dot(null_direction), 0.);
+    EXPECT_LE((A * null_direction).norm(), 1e-9 * A.norm() * null_direction.norm());
+    EXPECT_LE((null_direction.array() - null_direction.mean()).matrix().norm(),
+              1e-9 * null_direction.norm());
+  }
+}
+
+TEST(SupernodalLDLT, CountsOneZeroPivotPerConnectedComponent)
+{
+  std::mt19937 random(5);
+  // Two disconnected paths: a 2-dimensional null space.
+  std::vector<Eigen::Triplet<double>> entries;
+  const int half = 40;
+  for (int i = 0; i + 1 < 2 * half; ++i)
+    if (i != half - 1)
+      for (const auto& e :
+           {Eigen::Triplet<double>(i, i + 1, -1.), Eigen::Triplet<double>(i + 1, i, -1.),
+            Eigen::Triplet<double>(i, i, 1.), Eigen::Triplet<double>(i + 1, i + 1, 1.)})
+        entries.push_back(e);
+  Sparse_matrix A(2 * half, 2 * half);
+  A.setFromTriplets(entries.begin(), entries.end());
+  A.makeCompressed();
+  Supernodal_LDLT ldlt;
+  EXPECT_EQ(factorize(ldlt, A, amd_ordering(A)), Supernodal_LDLT::Inertia::POSITIVE_SEMIDEFINITE);
+  EXPECT_EQ(ldlt.number_of_zero_pivots(), 2);
+}
+
+TEST(SupernodalLDLT, CouplingOfAZeroPivotProvesIndefiniteness)
+{
+  // [0 1; 1 0]: the first pivot is zero and its column is not.
+  Sparse_matrix A(2, 2);
+  A.insert(0, 0) = 0.;
+  A.insert(1, 1) = 0.;
+  A.insert(0, 1) = 1.;
+  A.insert(1, 0) = 1.;
+  A.makeCompressed();
+  Supernodal_LDLT ldlt;
+  EXPECT_EQ(factorize(ldlt, A, {0, 1}), Supernodal_LDLT::Inertia::INDEFINITE);
+}
+
+TEST(SupernodalLDLT, EmptyMatrixIsPositiveDefinite)
+{
+  Sparse_matrix A(0, 0);
+  A.makeCompressed();
+  Supernodal_LDLT ldlt;
+  EXPECT_EQ(factorize(ldlt, A, {}), Supernodal_LDLT::Inertia::POSITIVE_DEFINITE);
+}
+
+} // namespace
