@@ -399,6 +399,7 @@ struct Failing_solver
   void set_r(double v) { inner.set_r(v); }
   void set_l(std::size_t i, double v) { inner.set_l(i, v); }
   void set_u(std::size_t i, double v) { inner.set_u(i, v); }
+  void set_warm_start(const std::vector<double>& x0) { inner.set_warm_start(x0); }
   template <typename OutputIterator>
   HL::Box_QP_report solve(OutputIterator out)
   {

@@ -140,6 +140,9 @@ public:
         solver_.set_u(i, bound);
       }
       std::vector<double> x(n, 0.0);
+      // Successive programs are alike: start from the previous solution and its active set.
+      if (previous_solution_.size() == n)
+        solver_.set_warm_start(previous_solution_);
       step.solver = solver_.solve(x.begin());
       // A solver that ran out of iterations still returns a feasible, improved point: use it.
       const bool usable =
@@ -152,6 +155,7 @@ public:
                                   std::to_string(iteration + 1) + ": " + step.solver.message,
                               report);
       }
+      previous_solution_ = x;
       step.step_scale = move_without_flips(x, directions, report);
       double max_x = 0;
       for (double xi : x)
@@ -495,6 +499,7 @@ private:
   Raw_model model_;
   std::vector<Desired_line> desired_;
   std::vector<std::pair<vertex_descriptor, Point>> checkpoint_;
+  std::vector<double> previous_solution_;
   double mean_edge_length_ = 1, length_scale_ = 1;
 };
 
