@@ -10,6 +10,7 @@
 // a two-segment fallback where a single OGH curve would not keep the tangent directions.
 // Plain arrays only: no mesh, no kernel.
 
+#include <CGAL/Highlight_lines/internal/vector3.h>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -21,32 +22,7 @@ namespace Highlight_lines {
 namespace internal {
 namespace ogh_detail {
 
-using Vec3 = std::array<double, 3>;
-
-inline Vec3 operator+(const Vec3& a, const Vec3& b)
-{
-  return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
-}
-inline Vec3 operator-(const Vec3& a, const Vec3& b)
-{
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-inline Vec3 operator*(double s, const Vec3& a)
-{
-  return {s * a[0], s * a[1], s * a[2]};
-}
-inline double dot(const Vec3& a, const Vec3& b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-inline double norm(const Vec3& a)
-{
-  return std::sqrt(dot(a, a));
-}
-inline bool is_finite(const Vec3& a)
-{
-  return std::isfinite(a[0]) && std::isfinite(a[1]) && std::isfinite(a[2]);
-}
+using namespace vector3;
 
 // a / |a|, or 0 for a zero vector. Divided by its largest component first, so that tiny or huge
 // (finite) tangents still give their direction instead of under- or overflowing in |a|².

@@ -15,6 +15,7 @@
 // displaced along fixed directions, V̄_k = V_k + x_k N_k, every K_i is affine in x, so
 // E(x) = ½ xᵀ Q x + cᵀ x + r exactly. Plain arrays only: no mesh, no kernel.
 
+#include <CGAL/Highlight_lines/internal/vector3.h>
 #include <CGAL/Highlight_lines/Invalid_input.h>
 #include <CGAL/assertions.h>
 
@@ -31,32 +32,7 @@ namespace Highlight_lines {
 namespace internal {
 namespace willmore_detail {
 
-using Vec3 = std::array<double, 3>;
-
-inline Vec3 operator+(const Vec3& a, const Vec3& b)
-{
-  return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
-}
-inline Vec3 operator-(const Vec3& a, const Vec3& b)
-{
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-inline Vec3 operator*(double s, const Vec3& a)
-{
-  return {s * a[0], s * a[1], s * a[2]};
-}
-inline double dot(const Vec3& a, const Vec3& b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-inline Vec3 cross(const Vec3& a, const Vec3& b)
-{
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-inline double norm(const Vec3& a)
-{
-  return std::sqrt(dot(a, a));
-}
+using namespace vector3;
 
 } // namespace willmore_detail
 
