@@ -48,10 +48,12 @@ inline bool node_is_inside(const Raw_node& n, const Fairing_region& region)
 struct Line_piece
 {
   std::vector<int> nodes;
-  // The outside nodes before Q0 and after Q1 (up to two each, nearest first), for the
-  // tangent estimates; -1 where the line ends.
-  std::array<int, 2> before{{-1, -1}}, after{{-1, -1}};
+  // The outside nodes before Q0 and after Q1 (up to max_tangent_nodes each, nearest first),
+  // for the tangent estimates.
+  std::vector<int> before, after;
 };
+
+constexpr long long max_tangent_nodes = 8;
 
 struct Pieces_found
 {
@@ -109,10 +111,10 @@ Pieces_found find_line_pieces(const Model& model, const Fairing_region& region)
         break;
       }
       piece.nodes.push_back(ids[index(j)]);
-      for (int b = 0; b < 2 && outside_at(k - 1 - b); ++b)
-        piece.before[std::size_t(b)] = ids[index(k - 1 - b)];
-      for (int b = 0; b < 2 && outside_at(j + 1 + b); ++b)
-        piece.after[std::size_t(b)] = ids[index(j + 1 + b)];
+      for (long long b = 0; b < max_tangent_nodes && outside_at(k - 1 - b) && b + 1 < count; ++b)
+        piece.before.push_back(ids[index(k - 1 - b)]);
+      for (long long b = 0; b < max_tangent_nodes && outside_at(j + 1 + b) && b + 1 < count; ++b)
+        piece.after.push_back(ids[index(j + 1 + b)]);
       found.pieces.push_back(std::move(piece));
       k = j - 1;
     }
@@ -120,28 +122,50 @@ Pieces_found find_line_pieces(const Model& model, const Fairing_region& region)
   return found;
 }
 
-// Tangent at the end point p of a line coming from q1 (nearest) and q2: the derivative of the
-// chord-length quadratic through q2, q1, p at p (or the last chord with one neighbour).
-inline Vec3 end_tangent(const Vec3& p, const Vec3* q1, const Vec3* q2)
+// Tangent at the end point p of a line coming from `previous` (nearest first): the derivative
+// at p of the least-squares quadratic through p and the previous points within arc length
+// `reach` of p (chord-length parameter, t = 0 at p). Fitting over a fixed length, rather than
+// over the one or two nearest nodes, keeps edge-scale wiggles of the line out of the tangent.
+inline Vec3 fitted_end_tangent(const Vec3& p, const std::vector<Vec3>& previous, double reach)
 {
   auto sub = [](const Vec3& a, const Vec3& b) {
     return Vec3{a[0] - b[0], a[1] - b[1], a[2] - b[2]};
   };
-  auto norm = [](const Vec3& a) { return std::sqrt(dot3(a, a)); };
-  const Vec3 d1 = sub(p, *q1);
-  const double h1 = norm(d1);
-  if (q2 == nullptr || !(h1 > 0))
-    return d1;
-  const Vec3 d2 = sub(*q1, *q2);
-  const double h2 = norm(d2);
-  if (!(h2 > 0))
-    return d1;
-  const double w = h1 / (h1 + h2);
-  Vec3 t;
+  std::vector<std::pair<double, Vec3>> samples; // (t < 0, point - p)
+  double t = 0;
+  Vec3 last = p;
+  for (const Vec3& q : previous) {
+    const Vec3 d = sub(q, last);
+    t -= std::sqrt(dot3(d, d));
+    if (!samples.empty() && -t > reach)
+      break;
+    samples.emplace_back(t, sub(q, p));
+    last = q;
+  }
+  if (samples.empty())
+    return {0, 0, 0};
+  if (samples.size() == 1 || !(samples.front().first < 0))
+    return sub(p, previous.front());
+  // Normal equations of min Σ |a t_i + b t_i² - (q_i - p)|².
+  double s2 = 0, s3 = 0, s4 = 0;
+  Vec3 r1{0, 0, 0}, r2{0, 0, 0};
+  for (const auto& sample : samples) {
+    const double ti = sample.first, t2 = ti * ti;
+    s2 += t2;
+    s3 += t2 * ti;
+    s4 += t2 * t2;
+    for (int k = 0; k < 3; ++k) {
+      r1[std::size_t(k)] += ti * sample.second[std::size_t(k)];
+      r2[std::size_t(k)] += t2 * sample.second[std::size_t(k)];
+    }
+  }
+  const double det = s2 * s4 - s3 * s3;
+  if (!(std::abs(det) > 1e-12 * s2 * s4))
+    return sub(p, previous.front());
+  Vec3 a;
   for (int k = 0; k < 3; ++k)
-    t[std::size_t(k)] =
-        d1[std::size_t(k)] / h1 + w * (d1[std::size_t(k)] / h1 - d2[std::size_t(k)] / h2);
-  return t;
+    a[std::size_t(k)] = (s4 * r1[std::size_t(k)] - s3 * r2[std::size_t(k)]) / det;
+  return a;
 }
 
 } // namespace internal

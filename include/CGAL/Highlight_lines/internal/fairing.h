@@ -42,6 +42,9 @@ struct Matched_piece
   std::vector<double> weights; // eq. 14, for the inner nodes
 };
 
+// The arc length of line, in mean edge lengths, over which end tangents are fitted.
+constexpr double tangent_reach_in_edges = 3;
+
 struct Fairing_options
 {
   double fairness_weight = 1, difference_weight = 1, convergence_threshold = 0.001;
@@ -276,21 +279,22 @@ private:
     const Pieces_found found = find_line_pieces(model_, region_);
     report.number_of_lines_without_target = found.lines_ending_inside + found.loops_inside;
     for (const Line_piece& piece : found.pieces) {
-      if (piece.before[0] < 0 || piece.after[0] < 0) { // no tangent outside R
+      if (piece.before.empty() || piece.after.empty()) { // no tangent outside R
         ++report.number_of_lines_without_target;
         continue;
       }
       const Vec3 q0 = node_point(piece.nodes.front()), q1 = node_point(piece.nodes.back());
-      const Vec3 b1 = node_point(piece.before[0]), a1 = node_point(piece.after[0]);
-      Vec3 b2{}, a2{};
-      if (piece.before[1] >= 0)
-        b2 = node_point(piece.before[1]);
-      if (piece.after[1] >= 0)
-        a2 = node_point(piece.after[1]);
-      const Vec3 t0 = end_tangent(q0, &b1, piece.before[1] >= 0 ? &b2 : nullptr);
-      Vec3 t1 = end_tangent(q1, &a1, piece.after[1] >= 0 ? &a2 : nullptr);
+      std::vector<Vec3> before, after;
+      for (int id : piece.before)
+        before.push_back(node_point(id));
+      for (int id : piece.after)
+        after.push_back(node_point(id));
+      // Along the line's direction of travel at both ends.
+      const double reach = tangent_reach_in_edges * mean_edge_length_;
+      const Vec3 t0 = fitted_end_tangent(q0, before, reach);
+      Vec3 t1 = fitted_end_tangent(q1, after, reach);
       for (double& c : t1)
-        c = -c; // along the direction of travel, away from R
+        c = -c;
       Desired_line line{Node_key::of(model_.node(std::size_t(piece.nodes.front()))),
                         Node_key::of(model_.node(std::size_t(piece.nodes.back()))),
                         make_ogh_target(q0, t0, q1, t1)};
