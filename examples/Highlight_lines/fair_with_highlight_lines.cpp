@@ -15,6 +15,7 @@
 #include <CGAL/compute_highlight_lines.h>
 #include <CGAL/fair_with_highlight_lines.h>
 
+#include "command_line.h"
 #include "highlight_picture.h"
 
 #include <chrono>
@@ -58,22 +59,8 @@ const char* usage =
     "  --size W H            picture size per panel (default 800 600)\n"
     "  --help                this text\n";
 
-[[noreturn]] void fail(const std::string& message)
-{
-  std::cerr << "fair_with_highlight_lines: " << message << "\n(see --help)\n";
-  std::exit(2);
-}
-
-double number(int& i, int argc, char** argv)
-{
-  if (++i >= argc)
-    fail(std::string("missing value after ") + argv[i - 1]);
-  char* end = nullptr;
-  const double value = std::strtod(argv[i], &end);
-  if (end == argv[i] || *end != '\0')
-    fail(std::string("not a number: ") + argv[i]);
-  return value;
-}
+using command_line::fail;
+using command_line::number;
 
 struct Options
 {
@@ -201,6 +188,7 @@ pic::Image picture(const Mesh& mesh, const std::vector<face_descriptor>& region,
 
 int main(int argc, char** argv)
 {
+  command_line::program() = "fair_with_highlight_lines";
   const Options o = parse(argc, argv);
   Mesh mesh;
   if (!CGAL::IO::read_polygon_mesh(o.mesh, mesh) || is_empty(mesh)) {

@@ -12,6 +12,7 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/compute_highlight_lines.h>
 
+#include "command_line.h"
 #include "highlight_picture.h"
 
 #include <algorithm>
@@ -51,22 +52,8 @@ const char* usage =
     "  --size W H              picture size in pixels (default 1600 1000)\n"
     "  --help                  this text\n";
 
-[[noreturn]] void fail(const std::string& message)
-{
-  std::cerr << "highlight_lines: " << message << "\n(see --help)\n";
-  std::exit(2);
-}
-
-double number(int& i, int argc, char** argv)
-{
-  if (++i >= argc)
-    fail(std::string("missing value after ") + argv[i - 1]);
-  char* end = nullptr;
-  const double value = std::strtod(argv[i], &end);
-  if (end == argv[i] || *end != '\0')
-    fail(std::string("not a number: ") + argv[i]);
-  return value;
-}
+using command_line::fail;
+using command_line::number;
 
 K::Vector_3 vector3(int& i, int argc, char** argv)
 {
@@ -143,6 +130,7 @@ highlight_picture::Vector3 to_array(const K::Vector_3& v)
 
 int main(int argc, char** argv)
 {
+  command_line::program() = "highlight_lines";
   const Options options = parse(argc, argv);
 
   Mesh mesh;
