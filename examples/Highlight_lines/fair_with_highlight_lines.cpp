@@ -55,6 +55,10 @@ const char* usage =
     "                        normals (default: 0.6 % of the diagonal for the bundled beetle,\n"
     "                        none for a user's mesh); 0 for none\n"
     "  --lines N             about N lights across the region (default 12)\n"
+    "  --base X Y Z          a point of the base light A0     } the light setup, explicitly;\n"
+    "  --direction X Y Z     the direction H of the lights    } all four together (default:\n"
+    "  --normal X Y Z        the normal Z of the light plane  } a light tunnel above the mesh,\n"
+    "  --spacing S           the distance between lights      } spacing from --lines)\n"
     "  --iterations N        iteration bound (default 50)\n"
     "  --size W H            picture size per panel (default 800 600)\n"
     "  --help                this text\n";
@@ -68,7 +72,8 @@ struct Options
   bool default_mesh = true;
   std::string out = "fairing";
   std::optional<K::Point_3> center;
-  std::optional<double> radius, dent;
+  std::optional<double> radius, dent, spacing;
+  std::optional<K::Vector_3> base, direction, normal;
   std::string region_file;
   int lines = 12, iterations = 50, width = 800, height = 600;
 };
@@ -88,7 +93,12 @@ Options parse(int argc, char** argv)
     } else if (a == "--center") {
       const double x = number(i, argc, argv), y = number(i, argc, argv), z = number(i, argc, argv);
       o.center = K::Point_3(x, y, z);
-    } else if (a == "--radius")
+    } else if (a == "--base" || a == "--direction" || a == "--normal") {
+      const double x = number(i, argc, argv), y = number(i, argc, argv), z = number(i, argc, argv);
+      (a == "--base" ? o.base : a == "--direction" ? o.direction : o.normal) = K::Vector_3(x, y, z);
+    } else if (a == "--spacing")
+      o.spacing = number(i, argc, argv);
+    else if (a == "--radius")
       o.radius = number(i, argc, argv);
     else if (a == "--dent")
       o.dent = number(i, argc, argv);
@@ -106,6 +116,9 @@ Options parse(int argc, char** argv)
       o.default_mesh = false;
     }
   }
+  const int given = bool(o.base) + bool(o.direction) + bool(o.normal) + bool(o.spacing);
+  if (given != 0 && given != 4)
+    fail("--base, --direction, --normal and --spacing go together");
   if (o.width < 64 || o.height < 64 || o.width > 8000 || o.height > 8000)
     fail("--size must be between 64 and 8000 pixels");
   return o;
@@ -246,12 +259,18 @@ int main(int argc, char** argv)
 
     // The light tunnel of the whole mesh, with the spacing refined so that about o.lines
     // lights cross the region: the close-up shows the lines' shape there.
+    // Explicit lights (--base --direction --normal --spacing) take precedence.
     const auto tunnel = HL::default_light_setup(mesh);
     const auto across = HL::default_level_range(mesh, tunnel, HLP::face_range(region));
     const double spacing = CGAL::to_double(tunnel.spacing()) *
                            double((std::max)(across.second - across.first, 1LL)) / double(o.lines);
-    const HL::Light_setup<K> lights(tunnel.base_point(), tunnel.light_direction(),
+    const HL::Light_setup<K> lights =
+        o.base ? HL::Light_setup<K>(CGAL::ORIGIN + *o.base, *o.direction, *o.normal, *o.spacing)
+               : HL::Light_setup<K>(tunnel.base_point(), tunnel.light_direction(),
                                     tunnel.plane_normal(), spacing);
+    std::cout << "lights: base " << lights.base_point() << ", direction "
+              << lights.light_direction() << ", plane normal " << lights.plane_normal()
+              << ", spacing " << lights.spacing() << "\n";
     const auto levels = HL::default_level_range(mesh, lights);
 
     // The dent: a smooth bump (1 - (r/R)^2)^3 pressed along the normals, inside the region.
