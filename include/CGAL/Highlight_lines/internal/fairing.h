@@ -128,6 +128,18 @@ public:
       solver_.set_r(w1 * fair.r);
       step.fairness_energy = fair.r;
       step.difference_energy = add_difference_terms(pieces, directions, w2);
+      // Q is positive semidefinite in exact arithmetic but can be singular (e.g. on regular
+      // grids); rounding then leaves tiny negative pivots. A relative 1e-10 on the diagonal makes
+      // the program strictly convex and changes the solution negligibly.
+      double trace = difference_trace_;
+      for (int k = 0; k < fair.Q.outerSize(); ++k)
+        for (Eigen::SparseMatrix<double>::InnerIterator it(fair.Q, k); it; ++it)
+          if (it.row() == it.col())
+            trace += w1 * it.value();
+      const double regularization = 1e-10 * trace / double((std::max)(n, std::size_t(1)));
+      if (regularization > 0 && std::isfinite(regularization))
+        for (std::size_t i = 0; i < n; ++i)
+          solver_.set_P(i, i, regularization);
       step.target_value =
           w1 * step.fairness_energy + options_.difference_weight * step.difference_energy;
       if (iteration >= options_.max_iterations) {
@@ -405,6 +417,17 @@ private:
     for (const Matched_piece& piece : pieces)
       for (std::size_t i = 0; i < piece.targets.size(); ++i) {
         const Raw_node& node = model_.node(std::size_t(piece.nodes[i + 1]));
+        // On an edge almost along a highlight line (its d values differ by a small fraction of
+        // the spacing), eq. 13 moves the node by many edge lengths for a small change of d: its
+        // linearisation means nothing there, and it would swamp the program. Such nodes still
+        // shape the chord-length parameters, but get no term.
+        if (node.edge >= 0) {
+          const auto& ends = lm.edge_vertices[std::size_t(node.edge)];
+          const double D = model_.levels[std::size_t(ends[1])].distance -
+                           model_.levels[std::size_t(ends[0])].distance;
+          if (!(std::abs(D) >= 0.1 * lights_.spacing_value()))
+            continue;
+        }
         const Node_jacobian::Row row =
             J.node_row(node, lm.edge_vertices, model_.levels, lights_.spacing_value());
         const Vec3 q = node_point(piece.nodes[i + 1]);
@@ -418,8 +441,12 @@ private:
               P[{a.first, b.first}] += 2 * w * l * dot3(a.second, b.second);
         }
       }
-    for (const auto& entry : P)
+    difference_trace_ = 0;
+    for (const auto& entry : P) {
       solver_.set_P(std::size_t(entry.first.first), std::size_t(entry.first.second), entry.second);
+      if (entry.first.first == entry.first.second)
+        difference_trace_ += entry.second;
+    }
     return difference_value(pieces);
   }
 
@@ -504,6 +531,7 @@ private:
   std::vector<Desired_line> desired_;
   std::vector<std::pair<vertex_descriptor, Point>> checkpoint_;
   std::vector<double> previous_solution_;
+  double difference_trace_ = 0; // trace of the q_diff part of the last program
   double mean_edge_length_ = 1, length_scale_ = 1;
 };
 
