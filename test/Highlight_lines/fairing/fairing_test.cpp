@@ -4,6 +4,7 @@
 #include <CGAL/Aff_transformation_3.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/compute_highlight_lines.h>
+#include <CGAL/Highlight_lines/default_light_setup.h>
 #include <CGAL/Highlight_lines/fairing_building_blocks.h>
 #include <CGAL/fair_with_highlight_lines.h>
 
@@ -540,6 +541,52 @@ TEST(TransactionalFairing, PointMapFailureRestoresTheMesh)
                std::runtime_error);
   *vpm.writes_left = 1 << 30;
   EXPECT_EQ(points_of(mesh), before);
+}
+
+} // namespace
+
+namespace {
+using namespace test;
+namespace HL = CGAL::Highlight_lines;
+
+// The public helpers give the same answers on Polyhedron_3 as on Surface_mesh.
+TEST(FairingBuildingBlocks, PolyhedronAgreesWithSurfaceMesh)
+{
+  const Dented_hood d = dented_hood(30);
+  const Surface_mesh sm = to_mesh<Surface_mesh>(d.dented);
+  const Polyhedron poly = to_mesh<Polyhedron>(d.dented);
+
+  const auto lights_sm = HL::default_light_setup(sm);
+  const auto lights_poly = HL::default_light_setup(poly);
+  EXPECT_EQ(lights_sm.base_point(), lights_poly.base_point());
+  EXPECT_EQ(lights_sm.spacing(), lights_poly.spacing());
+  EXPECT_EQ(HL::default_level_range(sm, lights_sm), HL::default_level_range(poly, lights_poly));
+
+  const auto region_sm = disk_region(sm, 1.5 * d.radius);
+  const auto region_poly = disk_region(poly, 1.5 * d.radius);
+  ASSERT_EQ(region_sm.size(), region_poly.size());
+  std::vector<boost::graph_traits<Surface_mesh>::vertex_descriptor> moving_sm;
+  std::vector<boost::graph_traits<Polyhedron>::vertex_descriptor> moving_poly;
+  HL::movable_vertices(sm, region_sm, std::back_inserter(moving_sm));
+  HL::movable_vertices(poly, region_poly, std::back_inserter(moving_poly));
+  std::set<Point> points_sm, points_poly;
+  for (auto v : moving_sm)
+    points_sm.insert(sm.point(v));
+  for (auto v : moving_poly)
+    points_poly.insert(v->point());
+  EXPECT_EQ(points_sm, points_poly);
+  EXPECT_GT(points_sm.size(), 50u);
+
+  std::vector<std::vector<Point>> curves_sm, curves_poly;
+  HL::desired_highlight_lines(sm, region_sm, hood_lights, std::back_inserter(curves_sm), 8);
+  HL::desired_highlight_lines(poly, region_poly, hood_lights, std::back_inserter(curves_poly), 8);
+  ASSERT_EQ(curves_sm.size(), curves_poly.size());
+  std::multiset<std::pair<double, double>> ends_sm, ends_poly;
+  for (const auto& c : curves_sm)
+    ends_sm.insert({c.front().x(), c.back().x()});
+  for (const auto& c : curves_poly)
+    ends_poly.insert({c.front().x(), c.back().x()});
+  EXPECT_EQ(ends_sm, ends_poly);
 }
 
 } // namespace
