@@ -25,6 +25,14 @@ enum qp_solver_t { qp_solver };
 enum fairing_visitor_t { fairing_visitor };
 enum neighborhood_rings_t { neighborhood_rings };
 enum keep_completed_iterations_t { keep_completed_iterations };
+enum number_of_orientations_t { number_of_orientations };
+enum number_of_offsets_t { number_of_offsets };
+enum detection_scale_t { detection_scale };
+enum detection_threshold_t { detection_threshold };
+enum minimum_bending_t { minimum_bending };
+enum minimum_evidence_t { minimum_evidence };
+enum region_margin_t { region_margin };
+enum maximum_incidence_angle_t { maximum_incidence_angle };
 } // namespace internal_np
 /// \endcond
 
@@ -82,6 +90,14 @@ CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(qp_solver_t, qp_solver)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(fairing_visitor_t, fairing_visitor)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(neighborhood_rings_t, neighborhood_rings)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(keep_completed_iterations_t, keep_completed_iterations)
+CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(number_of_orientations_t, number_of_orientations)
+CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(number_of_offsets_t, number_of_offsets)
+CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(detection_scale_t, detection_scale)
+CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(detection_threshold_t, detection_threshold)
+CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(minimum_bending_t, minimum_bending)
+CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(minimum_evidence_t, minimum_evidence)
+CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(region_margin_t, region_margin)
+CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(maximum_incidence_angle_t, maximum_incidence_angle)
 
 #undef CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER
 

@@ -1,0 +1,150 @@
+// Copyright (c) 2026 The Highlight_lines package authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Evaluation of detect_highlight_line_irregularities(): dents and bumps of known position and
+// size injected (seeded) into smooth or real meshes, and the detections matched against them.
+// Shared by the benchmark (recall/precision curves) and the tests (strict thresholds).
+#ifndef HIGHLIGHT_LINES_BENCHMARK_DETECTION_EVALUATION_H
+#define HIGHLIGHT_LINES_BENCHMARK_DETECTION_EVALUATION_H
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/detect_highlight_line_irregularities.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <set>
+#include <vector>
+
+namespace Highlight_lines_benchmark {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef Kernel::Point_3 Point;
+typedef Kernel::Vector_3 Vector;
+typedef CGAL::Surface_mesh<Point> Mesh;
+typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+typedef boost::graph_traits<Mesh>::face_descriptor face_descriptor;
+typedef CGAL::Highlight_lines::Highlight_line_irregularity<Mesh> Irregularity;
+
+/// A defect put into a mesh: displacement `height · (1 - (r/R)²)³` along the vertex normals,
+/// for the vertices within Euclidean distance `R` of `centre` (negative height: a dent).
+struct Injected_defect
+{
+  Point centre;
+  vertex_descriptor centre_vertex;
+  double radius = 0;
+  double height = 0;
+};
+
+inline double mean_edge_length(const Mesh& mesh)
+{
+  double sum = 0;
+  for (auto e : edges(mesh))
+    sum +=
+        std::sqrt(CGAL::squared_distance(mesh.point(source(e, mesh)), mesh.point(target(e, mesh))));
+  return sum / double(num_edges(mesh));
+}
+
+inline bool is_border_near(const Mesh& mesh, vertex_descriptor v, double radius)
+{
+  for (auto w : vertices(mesh))
+    if (mesh.is_border(w) &&
+        CGAL::squared_distance(mesh.point(w), mesh.point(v)) <= radius * radius)
+      return true;
+  return false;
+}
+
+/// Injects `count` defects of radius `radius_in_edges · ē` and height `height_in_edges · ē`
+/// (random sign) at random vertices at least `2R` from the border and `separation · R` from
+/// each other.
+/// `eligible(v)` restricts the centres (e.g. to smooth panels of a real mesh).
+template <typename Eligible>
+std::vector<Injected_defect> inject_defects(Mesh& mesh, int count, double radius_in_edges,
+                                            double height_in_edges, unsigned seed,
+                                            Eligible eligible, double separation = 3)
+{
+  const double e = mean_edge_length(mesh);
+  const double radius = radius_in_edges * e, height = height_in_edges * e;
+  std::vector<vertex_descriptor> candidates;
+  for (auto v : vertices(mesh))
+    if (eligible(v))
+      candidates.push_back(v);
+  std::mt19937 rng(seed);
+  std::vector<Injected_defect> defects;
+  for (int attempt = 0; attempt < 1000 && int(defects.size()) < count && !candidates.empty();
+       ++attempt) {
+    const vertex_descriptor v =
+        candidates[std::uniform_int_distribution<std::size_t>(0, candidates.size() - 1)(rng)];
+    const Point c = mesh.point(v);
+    bool far = !is_border_near(mesh, v, 2 * radius);
+    for (const auto& d : defects)
+      far = far && CGAL::squared_distance(d.centre, c) > std::pow(separation * radius, 2);
+    if (!far)
+      continue;
+    Injected_defect d;
+    d.centre = c;
+    d.centre_vertex = v;
+    d.radius = radius;
+    d.height = std::bernoulli_distribution(0.5)(rng) ? height : -height;
+    defects.push_back(d);
+  }
+  auto normals = mesh.add_property_map<vertex_descriptor, Vector>("v:injection_normal").first;
+  CGAL::Polygon_mesh_processing::compute_vertex_normals(mesh, normals);
+  std::vector<Point> moved(mesh.points().begin(), mesh.points().end());
+  for (const auto& d : defects)
+    for (auto w : vertices(mesh)) {
+      const double r2 = CGAL::squared_distance(mesh.point(w), d.centre) / (d.radius * d.radius);
+      if (r2 < 1) {
+        const double f = (1 - r2) * (1 - r2) * (1 - r2);
+        moved[w.idx()] = moved[w.idx()] + d.height * f * normals[w];
+      }
+    }
+  for (auto w : vertices(mesh))
+    mesh.point(w) = moved[w.idx()];
+  mesh.remove_property_map(normals);
+  return defects;
+}
+
+/// How the detections match the defects.
+struct Detection_score
+{
+  std::size_t defects = 0, found_defects = 0;
+  std::size_t regions = 0, true_regions = 0;
+  double recall() const { return defects == 0 ? 1.0 : double(found_defects) / double(defects); }
+  double precision() const { return regions == 0 ? 1.0 : double(true_regions) / double(regions); }
+};
+
+/// A defect is found if a region contains a face at its centre vertex; a region is true if it
+/// has a vertex within the radius of some defect.
+inline Detection_score match(const Mesh& mesh, const std::vector<Injected_defect>& defects,
+                             const std::vector<Irregularity>& found)
+{
+  Detection_score score;
+  score.defects = defects.size();
+  score.regions = found.size();
+  std::vector<std::set<vertex_descriptor>> region_vertices(found.size());
+  for (std::size_t i = 0; i < found.size(); ++i)
+    for (face_descriptor f : found[i].faces)
+      for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+        region_vertices[i].insert(v);
+  for (const auto& d : defects) {
+    bool hit = false;
+    for (const auto& vs : region_vertices)
+      hit = hit || vs.count(d.centre_vertex) > 0;
+    score.found_defects += hit;
+  }
+  for (const auto& vs : region_vertices) {
+    bool genuine = false;
+    for (vertex_descriptor v : vs)
+      for (const auto& d : defects)
+        genuine = genuine || CGAL::squared_distance(mesh.point(v), d.centre) < d.radius * d.radius;
+    score.true_regions += genuine;
+  }
+  return score;
+}
+
+} // namespace Highlight_lines_benchmark
+
+#endif // HIGHLIGHT_LINES_BENCHMARK_DETECTION_EVALUATION_H

@@ -1,0 +1,186 @@
+// Finds where the highlight lines of a mesh bend abnormally and marks those regions in a picture.
+//
+//   detect_highlight_line_irregularities [mesh.off|.obj|.ply] [options]
+//
+// With no mesh, the bundled VW Beetle body (data/beetle.off) is used. Run with --help.
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Highlight_lines/default_light_setup.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/compute_highlight_lines.h>
+#include <CGAL/detect_highlight_line_irregularities.h>
+
+#include "command_line.h"
+#include "highlight_picture.h"
+
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+typedef boost::graph_traits<Mesh>::face_descriptor face_descriptor;
+namespace HL = CGAL::Highlight_lines;
+namespace HLP = CGAL::Highlight_lines::parameters;
+namespace pic = highlight_picture;
+
+namespace {
+
+const char* usage =
+    "usage: detect_highlight_line_irregularities [MESH] [options]\n"
+    "\n"
+    "Sweeps a light tunnel over a triangle mesh (OFF, OBJ or PLY), finds where the highlight\n"
+    "lines bend abnormally, prints the regions found and writes PREFIX.png (regions tinted,\n"
+    "strongest in red) and PREFIX.regions.txt (one line of face indices per region).\n"
+    "MESH defaults to the bundled VW Beetle body.\n"
+    "\n"
+    "options:\n"
+    "  --out PREFIX        output prefix (default: irregularities)\n"
+    "  --lines N           about N lights across the surface (default 30)\n"
+    "  --orientations N    light directions in the sweep (default 3)\n"
+    "  --offsets N         shifts of the lights per direction (default 2)\n"
+    "  --scale W           scale of the bending measure, in mean edge lengths (default 3)\n"
+    "  --threshold Z       robust z-score of an anomaly (default 5)\n"
+    "  --size W H          picture size in pixels (default 1600 1000)\n"
+    "  --help              this text\n";
+
+using command_line::fail;
+using command_line::number;
+
+struct Options
+{
+  std::string mesh = std::string(HIGHLIGHT_LINES_DATA_DIR) + "/beetle.off";
+  std::string out = "irregularities";
+  int lines = 30, orientations = 3, offsets = 2;
+  double scale = 3, threshold = 5;
+  int width = 1600, height = 1000;
+};
+
+Options parse(int argc, char** argv)
+{
+  Options o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--help" || a == "-h") {
+      std::cout << usage;
+      std::exit(0);
+    } else if (a == "--out") {
+      if (++i >= argc)
+        fail("missing value after --out");
+      o.out = argv[i];
+    } else if (a == "--lines")
+      o.lines = int(number(i, argc, argv));
+    else if (a == "--orientations")
+      o.orientations = int(number(i, argc, argv));
+    else if (a == "--offsets")
+      o.offsets = int(number(i, argc, argv));
+    else if (a == "--scale")
+      o.scale = number(i, argc, argv);
+    else if (a == "--threshold")
+      o.threshold = number(i, argc, argv);
+    else if (a == "--size") {
+      o.width = int(number(i, argc, argv));
+      o.height = int(number(i, argc, argv));
+    } else if (!a.empty() && a[0] == '-')
+      fail("unknown option " + a);
+    else
+      o.mesh = a;
+  }
+  if (o.width < 16 || o.height < 16 || o.width > 10000 || o.height > 10000)
+    fail("--size must be between 16 and 10000 pixels");
+  return o;
+}
+
+pic::Point3 to_array(const K::Point_3& p)
+{
+  return {p.x(), p.y(), p.z()};
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  command_line::program() = "detect_highlight_line_irregularities";
+  const Options o = parse(argc, argv);
+  Mesh mesh;
+  if (!CGAL::IO::read_polygon_mesh(o.mesh, mesh) || is_empty(mesh)) {
+    std::cerr << "detect_highlight_line_irregularities: cannot read a polygon mesh from " << o.mesh
+              << "\n";
+    return 1;
+  }
+  std::cout << "mesh " << o.mesh << ": " << num_vertices(mesh) << " vertices, " << num_faces(mesh)
+            << " faces\n";
+  try {
+    const HL::Light_setup<K> lights = HL::default_light_setup(mesh, HLP::number_of_lines(o.lines));
+    std::vector<HL::Highlight_line_irregularity<Mesh>> found;
+    CGAL::detect_highlight_line_irregularities(
+        mesh, lights, std::back_inserter(found),
+        HLP::combine(HLP::number_of_orientations(o.orientations), HLP::number_of_offsets(o.offsets),
+                     HLP::detection_scale(o.scale), HLP::detection_threshold(o.threshold)));
+
+    std::cout << found.size() << " irregular region(s), strongest first:\n";
+    std::ofstream regions_file(o.out + ".regions.txt");
+    for (std::size_t i = 0; i < found.size(); ++i) {
+      const auto& r = found[i];
+      std::cout << "  #" << i + 1 << ": score " << r.score << ", bending up to " << r.max_bending
+                << " rad, seen on " << r.number_of_lines << " lines in " << r.number_of_light_setups
+                << " light setups, " << r.faces.size() << " faces around "
+                << mesh.point(r.peak_vertex) << "\n";
+      for (std::size_t k = 0; k < r.faces.size(); ++k)
+        regions_file << (k ? " " : "") << std::size_t(r.faces[k]);
+      regions_file << "\n";
+    }
+
+    // The picture: the whole mesh from above the light plane, the regions tinted (red: the
+    // strongest, orange: the others), the highlight lines of the first light setup on top.
+    std::vector<pic::Point3> points;
+    for (auto v : vertices(mesh))
+      points.push_back(to_array(mesh.point(v)));
+    std::vector<std::array<std::size_t, 3>> triangles;
+    for (face_descriptor f : faces(mesh)) {
+      std::array<std::size_t, 3> t{};
+      std::size_t j = 0;
+      for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+        t[j++] = std::size_t(v);
+      triangles.push_back(t);
+    }
+    std::vector<std::optional<pic::RGB>> colors(num_faces(mesh));
+    for (std::size_t i = found.size(); i-- > 0;)
+      for (face_descriptor f : found[i].faces)
+        colors[std::size_t(f)] =
+            pic::mix(pic::colors::paint, i == 0 ? pic::colors::red : pic::colors::orange, 0.6);
+    const auto z = to_array(CGAL::ORIGIN + lights.plane_normal());
+    const auto h = to_array(CGAL::ORIGIN + lights.light_direction());
+    const pic::Vector3 view{-(0.5 * h[0] + z[0]), -(0.5 * h[1] + z[1]), -(0.5 * h[2] + z[2])};
+    const auto camera = pic::fit_camera(points, view, z, o.width, o.height);
+    pic::Renderer renderer(o.width, o.height, camera);
+    renderer.draw_mesh(points, triangles, pic::Surface_style{}, colors);
+    std::vector<std::vector<K::Point_3>> lines;
+    CGAL::compute_highlight_lines(
+        mesh, lights, std::back_inserter(lines),
+        HLP::combine(HLP::level_range(HL::default_level_range(mesh, lights)),
+                     HLP::facing_side_only(true)));
+    std::vector<std::vector<pic::Point3>> polylines;
+    for (const auto& l : lines) {
+      polylines.emplace_back();
+      for (const auto& p : l)
+        polylines.back().push_back(to_array(p));
+    }
+    renderer.draw_polylines(polylines);
+    const std::string picture = o.out + ".png";
+    if (!pic::write_png(picture, renderer.image()) || !regions_file) {
+      std::cerr << "detect_highlight_line_irregularities: cannot write " << picture << " or "
+                << o.out << ".regions.txt\n";
+      return 1;
+    }
+    std::cout << "wrote " << picture << " and " << o.out << ".regions.txt\n";
+  } catch (const HL::Invalid_input& e) {
+    std::cerr << "detect_highlight_line_irregularities: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

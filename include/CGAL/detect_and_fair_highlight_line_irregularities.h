@@ -1,0 +1,80 @@
+// Copyright (c) 2026 The Highlight_lines package authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_DETECT_AND_FAIR_HIGHLIGHT_LINE_IRREGULARITIES_H
+#define CGAL_DETECT_AND_FAIR_HIGHLIGHT_LINE_IRREGULARITIES_H
+
+#include <CGAL/Highlight_lines/Irregularity_repair.h>
+#include <CGAL/detect_highlight_line_irregularities.h>
+#include <CGAL/fair_with_highlight_lines.h>
+
+#include <iterator>
+#include <vector>
+
+namespace CGAL {
+
+/*!
+\ingroup PkgHighlightLinesRef
+
+Finds the irregular regions of a mesh with `detect_highlight_line_irregularities()` and fairs
+each of them with `fair_with_highlight_lines()`, one at a time, the strongest first, as the
+paper prescribes for several regions (the model is recomputed for each, so a region is faired
+against the highlight lines left by the previous ones).
+
+A region whose fairing is refused (e.g. it has no movable vertex because it is too thin) or
+fails is left exactly as it was, recorded with the reason, and the next region is tried.
+
+\tparam TriangleMesh a model of `MutableFaceGraph` whose faces are triangles
+\tparam GeomTraits a model of `Kernel`
+
+\param tm the mesh, modified in place through the vertex point map
+\param lights the light setup: it starts the detection's sweep and is the one whose lines the
+fairing makes run smoothly
+\param np an optional sequence of named parameters: those of
+`detect_highlight_line_irregularities()` and those of `fair_with_highlight_lines()`, passed to
+both (a `fairing_visitor` is called for every iteration of every region).
+
+\returns one entry per region found, in the order they were faired.
+
+\throws Highlight_lines::Invalid_input for what the detection rejects (the mesh is untouched).
+Exceptions other than `Highlight_lines::Invalid_input` and `Highlight_lines::Fairing_failure`
+(e.g. from a visitor) propagate, with the region being faired restored as
+`fair_with_highlight_lines()` documents; the regions faired before stay faired.
+*/
+template <typename TriangleMesh, typename GeomTraits,
+          typename NamedParameters = parameters::Default_named_parameters>
+std::vector<Highlight_lines::Irregularity_repair<TriangleMesh>>
+detect_and_fair_highlight_line_irregularities(
+    TriangleMesh& tm, const Highlight_lines::Light_setup<GeomTraits>& lights,
+    const NamedParameters& np = parameters::default_values())
+{
+  namespace HL = Highlight_lines;
+  std::vector<HL::Highlight_line_irregularity<TriangleMesh>> found;
+  detect_highlight_line_irregularities(static_cast<const TriangleMesh&>(tm), lights,
+                                       std::back_inserter(found), np);
+  std::vector<HL::Irregularity_repair<TriangleMesh>> repairs;
+  repairs.reserve(found.size());
+  for (auto& irregularity : found) {
+    HL::Irregularity_repair<TriangleMesh> repair;
+    repair.irregularity = std::move(irregularity);
+    try {
+      repair.report = fair_with_highlight_lines(tm, repair.irregularity.faces, lights, np);
+      repair.repaired = true;
+    } catch (const HL::Fairing_failure& e) {
+      repair.report = e.report();
+      repair.failure = e.what();
+    } catch (const HL::Invalid_input& e) {
+      // A parameter out of its domain is refused for the first region already, before the
+      // mesh is touched: the caller's mistake, not the region's.
+      if (e.problem() == HL::Invalid_input::Problem::INVALID_PARAMETER)
+        throw;
+      repair.failure = e.what();
+    }
+    repairs.push_back(std::move(repair));
+  }
+  return repairs;
+}
+
+} // namespace CGAL
+
+#endif // CGAL_DETECT_AND_FAIR_HIGHLIGHT_LINE_IRREGULARITIES_H

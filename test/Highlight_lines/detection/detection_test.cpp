@@ -1,0 +1,447 @@
+// detect_highlight_line_irregularities() and detect_and_fair_highlight_line_irregularities():
+// the bending measure, the grouping into regions, recall and precision on seeded injected
+// defects, invariances, bad input, and the repair of what was found.
+#include "../model/test_meshes.h"
+
+#include "../../../benchmark/Highlight_lines/detection_evaluation.h"
+
+#include <CGAL/Aff_transformation_3.h>
+#include <CGAL/Highlight_lines/default_light_setup.h>
+#include <CGAL/Highlight_lines/fairing_building_blocks.h>
+#include <CGAL/detect_and_fair_highlight_line_irregularities.h>
+#include <CGAL/detect_highlight_line_irregularities.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <random>
+#include <set>
+
+namespace {
+namespace HB = Highlight_lines_benchmark;
+namespace HL = CGAL::Highlight_lines;
+namespace HLI = CGAL::Highlight_lines::internal;
+namespace HLP = CGAL::Highlight_lines::parameters;
+using HLI::vector3::Vec3;
+
+double hood(double x, double y)
+{
+  return 0.25 * (1 - 0.35 * x * x) - 0.12 * y * y + 0.05 * x * y;
+}
+
+// An irregularly triangulated car hood (jittered grid of 80 x 80 cells over [-1, 1]^2).
+HB::Mesh smooth_hood(unsigned seed, int n = 80)
+{
+  return test::to_mesh<HB::Mesh>(test::grid(n, 2.0 / n, -1, -1, hood, 0.3, seed));
+}
+
+std::vector<HB::Irregularity> detect(const HB::Mesh& mesh)
+{
+  std::vector<HB::Irregularity> found;
+  CGAL::detect_highlight_line_irregularities(
+      mesh, HL::default_light_setup(mesh, HLP::number_of_lines(30)), std::back_inserter(found));
+  return found;
+}
+
+// Recall and precision over seeds 1..8, four defects of radius 5 ē per hood.
+HB::Detection_score score_on_hoods(double height_in_edges)
+{
+  HB::Detection_score total;
+  for (unsigned seed = 1; seed <= 8; ++seed) {
+    HB::Mesh mesh = smooth_hood(seed);
+    std::vector<HB::Injected_defect> defects;
+    if (height_in_edges > 0)
+      defects = HB::inject_defects(mesh, 4, 5.0, height_in_edges, seed, [](auto) { return true; });
+    const HB::Detection_score s = HB::match(mesh, defects, detect(mesh));
+    total.defects += s.defects;
+    total.found_defects += s.found_defects;
+    total.regions += s.regions;
+    total.true_regions += s.true_regions;
+  }
+  return total;
+}
+
+// --- The bending measure -------------------------------------------------------------------
+
+std::vector<Vec3> sampled_curve(double length, int n, const std::function<Vec3(double)>& curve)
+{
+  std::vector<Vec3> points;
+  for (int i = 0; i <= n; ++i)
+    points.push_back(curve(length * i / n));
+  return points;
+}
+
+TEST(LineBending, VanishesOnStraightLinesAndCircles)
+{
+  HLI::Line_bending_scales scales;
+  scales.step = 0.05;
+  HLI::Line_bending straight, circle;
+  HLI::compute_line_bending(sampled_curve(10, 137,
+                                          [](double s) {
+                                            return Vec3{0.3 * s, 0.4 * s, 1.0};
+                                          }),
+                            false, scales, straight);
+  ASSERT_GT(straight.bending.size(), 30u);
+  std::size_t evaluated = 0;
+  for (double b : straight.bending)
+    if (b >= 0) {
+      ++evaluated;
+      EXPECT_LT(b, 1e-12);
+    }
+  EXPECT_EQ(evaluated, straight.bending.size() - 12); // 3w/2 = 6 samples at each end
+
+  // A closed circle of radius 1, finely sampled: curvature is constant, its variation is only
+  // the polygon's: far below a bump's.
+  std::vector<Vec3> ring;
+  for (int i = 0; i < 2000; ++i)
+    ring.push_back({std::cos(2 * M_PI * i / 2000), std::sin(2 * M_PI * i / 2000), 0});
+  HLI::compute_line_bending(ring, true, scales, circle);
+  ASSERT_FALSE(circle.bending.empty());
+  for (double b : circle.bending) {
+    EXPECT_GE(b, 0);
+    EXPECT_LT(b, 1e-4);
+  }
+}
+
+TEST(LineBending, PeaksAtABumpAndScalesOut)
+{
+  // A straight line with a small sideways bump of width 0.4 around s = 5.
+  auto bumped = [](double scale) {
+    return sampled_curve(10 * scale, 500, [scale](double s) {
+      const double t = (s / scale - 5) / 0.4;
+      return Vec3{s, t * t < 1 ? scale * 0.02 * std::pow(1 - t * t, 3) : 0.0, 0};
+    });
+  };
+  HLI::Line_bending_scales scales;
+  scales.step = 0.1;
+  HLI::Line_bending bending, scaled;
+  HLI::compute_line_bending(bumped(1), false, scales, bending);
+  scales.step = 0.1 * 7.5;
+  HLI::compute_line_bending(bumped(7.5), false, scales, scaled);
+  const auto peak = std::max_element(bending.bending.begin(), bending.bending.end());
+  const double peak_s = 0.1 * double(peak - bending.bending.begin());
+  EXPECT_NEAR(peak_s, 5.0, 0.4);
+  EXPECT_GT(*peak, 0.01);
+  // Away from the bump (beyond its width plus the stencil's reach), nothing.
+  for (std::size_t i = 0; i < bending.bending.size(); ++i)
+    if (std::abs(0.1 * double(i) - 5) > 0.4 + 0.6 + 1e-9 && bending.bending[i] >= 0) {
+      EXPECT_LT(bending.bending[i], 1e-12);
+    }
+  // Dimensionless: scaling curve and step together gives the same values.
+  ASSERT_EQ(bending.bending.size(), scaled.bending.size());
+  for (std::size_t i = 0; i < bending.bending.size(); ++i)
+    EXPECT_NEAR(bending.bending[i], scaled.bending[i], 1e-9);
+}
+
+TEST(LineBending, RobustStatisticsIgnoreOutliersAndUnscoredSamples)
+{
+  std::vector<double> values{1, 2, 3, 4, 5, 1000, -1, -1};
+  const HLI::Robust_statistics stats = HLI::robust_statistics(values);
+  EXPECT_EQ(stats.count, 6u);
+  EXPECT_DOUBLE_EQ(stats.median, 3.5);
+  EXPECT_NEAR(stats.deviation, 1.4826 * 1.5, 1e-12);
+}
+
+// --- Grouping ------------------------------------------------------------------------------
+
+TEST(AnomalyRegions, JoinNearAnomaliesDropWeakOnesAndAddAMargin)
+{
+  // A strip of 40 x 3 vertices, triangulated.
+  const int n = 40;
+  std::vector<std::array<int, 3>> faces;
+  auto id = [](int i, int j) { return j * n + i; };
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i + 1 < n; ++i) {
+      faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  auto anomaly = [&](int i, std::size_t line, std::size_t setup) {
+    HLI::Anomaly a;
+    a.vertex = id(i, 1);
+    a.line = line;
+    a.setup = setup;
+    a.score = 10;
+    return a;
+  };
+  // Cluster A (vertices 5 and 7: within 3 rings) seen in two setups; cluster B (vertex 30)
+  // in one setup only.
+  const std::vector<HLI::Anomaly> anomalies{anomaly(5, 0, 0), anomaly(7, 1, 1), anomaly(30, 2, 0),
+                                            anomaly(30, 3, 0)};
+  const auto regions = HLI::group_anomalies(faces, 3 * n, anomalies, 3, 1, 2);
+  ASSERT_EQ(regions.size(), 1u);
+  EXPECT_EQ(regions[0].anomalies, (std::vector<std::size_t>{0, 1}));
+  // Columns 5 - 3 - 1 = 1 to 7 + 3 + 1 = 11 are reached: faces of cells 0..11.
+  std::set<int> cells;
+  for (int f : regions[0].faces)
+    cells.insert((f / 2) % (n - 1));
+  EXPECT_EQ(*cells.begin(), 0);
+  EXPECT_EQ(*cells.rbegin(), 11);
+
+  // With one setup enough, B is a region of its own.
+  EXPECT_EQ(HLI::group_anomalies(faces, 3 * n, anomalies, 3, 1, 1).size(), 2u);
+}
+
+// --- Recall and precision (the curves are in benchmark_detection) ---------------------------
+
+TEST(Detection, FindsEveryDefectOfAFifthOfAnEdgeLengthAndNothingElse)
+{
+  const HB::Detection_score s = score_on_hoods(0.05);
+  EXPECT_EQ(s.defects, 32u);
+  EXPECT_EQ(s.recall(), 1.0);
+  EXPECT_EQ(s.precision(), 1.0);
+}
+
+TEST(Detection, FindsMostDefectsOfAFiftiethOfAnEdgeLength)
+{
+  const HB::Detection_score s = score_on_hoods(0.02);
+  EXPECT_GE(s.recall(), 0.9);
+  EXPECT_EQ(s.precision(), 1.0);
+}
+
+TEST(Detection, HardlyAnyFalseAlarmOnSmoothHoods)
+{
+  const HB::Detection_score s = score_on_hoods(0.0);
+  EXPECT_LE(s.regions, 1u); // over 8 hoods of 12,800 triangles
+}
+
+TEST(Detection, RegionsEncloseTheirDefectWithAMargin)
+{
+  HB::Mesh mesh = smooth_hood(3);
+  const auto defects = HB::inject_defects(
+      mesh, 3, 5.0, 0.3, 3, [](auto) { return true; }, 6);
+  const auto found = detect(mesh);
+  ASSERT_EQ(found.size(), defects.size());
+  for (const auto& d : defects) {
+    // The region holding the centre holds every face of the defect.
+    const HB::Irregularity* region = nullptr;
+    for (const auto& r : found)
+      for (auto f : r.faces)
+        for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+          if (v == d.centre_vertex)
+            region = &r;
+    ASSERT_NE(region, nullptr);
+    const std::set<HB::face_descriptor> faces(region->faces.begin(), region->faces.end());
+    for (auto f : CGAL::faces(mesh)) {
+      bool inside = true;
+      for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+        inside = inside && CGAL::squared_distance(mesh.point(v), d.centre) < d.radius * d.radius;
+      if (inside) {
+        EXPECT_EQ(faces.count(f), 1u);
+      }
+    }
+    EXPECT_GE(region->number_of_light_setups, 3u);
+    EXPECT_GT(region->score, 5.0);
+  }
+}
+
+// --- Invariances --------------------------------------------------------------------------
+
+std::set<std::array<std::size_t, 3>> face_keys(const HB::Mesh& mesh, const HB::Irregularity& r)
+{
+  std::set<std::array<std::size_t, 3>> keys;
+  for (auto f : r.faces) {
+    std::array<std::size_t, 3> k{};
+    std::size_t j = 0;
+    for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+      k[j++] = std::size_t(v);
+    std::sort(k.begin(), k.end());
+    keys.insert(k);
+  }
+  return keys;
+}
+
+TEST(Detection, CommutesWithRigidMotionAndScaling)
+{
+  HB::Mesh mesh = smooth_hood(5);
+  ASSERT_EQ(HB::inject_defects(
+                mesh, 3, 5.0, 0.1, 5, [](auto) { return true; }, 6)
+                .size(),
+            3u);
+  const auto lights = HL::default_light_setup(mesh, HLP::number_of_lines(30));
+  const CGAL::Aff_transformation_3<HB::Kernel> motion(0.6, -0.8, 0, 1.5, 0.8, 0.6, 0, -2, 0, 0, 1,
+                                                      0.25, 1.0);
+  const CGAL::Aff_transformation_3<HB::Kernel> scaling(CGAL::SCALING, 1000.0);
+  for (const auto& transform : {motion * scaling, scaling.inverse()}) {
+    HB::Mesh moved = mesh;
+    for (auto v : vertices(moved))
+      moved.point(v) = transform(moved.point(v));
+    std::vector<HB::Irregularity> a, b;
+    CGAL::detect_highlight_line_irregularities(mesh, lights, std::back_inserter(a));
+    CGAL::detect_highlight_line_irregularities(moved, lights.transformed(transform),
+                                               std::back_inserter(b));
+    ASSERT_EQ(a.size(), 3u);
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      EXPECT_EQ(face_keys(mesh, a[i]), face_keys(moved, b[i]));
+      EXPECT_NEAR(a[i].score, b[i].score, 1e-6 * a[i].score);
+    }
+  }
+}
+
+TEST(Detection, IndependentOfFaceOrderAndMeshType)
+{
+  test::Soup soup = test::grid(60, 2.0 / 60, -1, -1, hood, 0.3, 9);
+  HB::Mesh mesh = test::to_mesh<HB::Mesh>(soup);
+  ASSERT_EQ(HB::inject_defects(
+                mesh, 2, 5.0, 0.1, 9, [](auto) { return true; }, 6)
+                .size(),
+            2u);
+  for (auto v : vertices(mesh))
+    soup.points[std::size_t(v)] = mesh.point(v);
+  test::Soup shuffled = soup;
+  std::shuffle(shuffled.triangles.begin(), shuffled.triangles.end(), std::mt19937(4));
+  const HB::Mesh reordered = test::to_mesh<HB::Mesh>(shuffled);
+  const test::Polyhedron polyhedron = test::to_mesh<test::Polyhedron>(soup);
+  const auto lights = HL::default_light_setup(mesh, HLP::number_of_lines(30));
+
+  std::vector<HB::Irregularity> a, b;
+  std::vector<HL::Highlight_line_irregularity<test::Polyhedron>> c;
+  CGAL::detect_highlight_line_irregularities(mesh, lights, std::back_inserter(a));
+  CGAL::detect_highlight_line_irregularities(reordered, lights, std::back_inserter(b));
+  CGAL::detect_highlight_line_irregularities(polyhedron, lights, std::back_inserter(c));
+  ASSERT_EQ(a.size(), 2u);
+  ASSERT_EQ(b.size(), a.size());
+  ASSERT_EQ(c.size(), a.size());
+  std::map<const void*, std::size_t> polyhedron_ids;
+  std::size_t next = 0;
+  for (auto v : vertices(polyhedron))
+    polyhedron_ids[&*v] = next++;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(face_keys(mesh, a[i]), face_keys(reordered, b[i]));
+    EXPECT_NEAR(a[i].score, b[i].score, 1e-9 * a[i].score); // normals summed in another order
+    std::set<std::array<std::size_t, 3>> keys;
+    for (auto f : c[i].faces) {
+      std::array<std::size_t, 3> k{};
+      std::size_t j = 0;
+      for (auto v : CGAL::vertices_around_face(halfedge(f, polyhedron), polyhedron))
+        k[j++] = polyhedron_ids[&*v];
+      std::sort(k.begin(), k.end());
+      keys.insert(k);
+    }
+    EXPECT_EQ(face_keys(mesh, a[i]), keys);
+    EXPECT_NEAR(a[i].score, c[i].score, 1e-9 * a[i].score);
+  }
+}
+
+// --- Bad input ----------------------------------------------------------------------------
+
+TEST(Detection, RejectsParametersOutOfTheirDomain)
+{
+  const HB::Mesh mesh = smooth_hood(1, 20);
+  const auto lights = HL::default_light_setup(mesh);
+  std::vector<HB::Irregularity> found;
+  auto rejects = [&](const auto& np) {
+    try {
+      CGAL::detect_highlight_line_irregularities(mesh, lights, std::back_inserter(found), np);
+    } catch (const HL::Invalid_input& e) {
+      EXPECT_EQ(e.problem(), HL::Invalid_input::Problem::INVALID_PARAMETER);
+      return true;
+    }
+    return false;
+  };
+  EXPECT_TRUE(rejects(HLP::number_of_orientations(0)));
+  EXPECT_TRUE(rejects(HLP::number_of_offsets(-2)));
+  EXPECT_TRUE(rejects(HLP::detection_scale(0.5)));
+  EXPECT_TRUE(rejects(HLP::detection_scale(std::nan(""))));
+  EXPECT_TRUE(rejects(HLP::detection_threshold(0.0)));
+  EXPECT_TRUE(rejects(HLP::minimum_bending(-1.0)));
+  EXPECT_TRUE(rejects(HLP::minimum_evidence(1.5)));
+  EXPECT_TRUE(rejects(HLP::region_margin(-1)));
+  EXPECT_TRUE(rejects(HLP::maximum_incidence_angle(95.0)));
+  EXPECT_TRUE(found.empty());
+}
+
+TEST(Detection, RejectsNonFiniteCoordinates)
+{
+  HB::Mesh mesh = smooth_hood(1, 20);
+  const auto lights = HL::default_light_setup(mesh);
+  mesh.point(*vertices(mesh).begin()) = HB::Point(std::nan(""), 0, 0);
+  std::vector<HB::Irregularity> found;
+  EXPECT_THROW(CGAL::detect_highlight_line_irregularities(mesh, lights, std::back_inserter(found)),
+               HL::Invalid_input);
+}
+
+// --- Detect and fair ----------------------------------------------------------------------
+
+TEST(DetectAndFair, RepairsEveryDefectFoundAndTouchesNothingElse)
+{
+  const HB::Mesh undented = smooth_hood(2, 60);
+  HB::Mesh mesh = undented;
+  const auto defects = HB::inject_defects(
+      mesh, 2, 5.0, 0.5, 2, [](auto) { return true; }, 5);
+  ASSERT_EQ(defects.size(), 2u);
+  const HB::Mesh dented = mesh;
+  const auto lights = HL::default_light_setup(mesh, HLP::number_of_lines(30));
+
+  std::vector<std::size_t> iterations;
+  auto visitor = [&](const HL::Fairing_report::Iteration&) {
+    iterations.push_back(0);
+    return true;
+  };
+  const auto repairs = CGAL::detect_and_fair_highlight_line_irregularities(
+      mesh, lights, HLP::fairing_visitor(visitor));
+  ASSERT_EQ(repairs.size(), 2u);
+  std::set<HB::vertex_descriptor> movable;
+  std::size_t total_iterations = 0;
+  for (const auto& repair : repairs) {
+    EXPECT_TRUE(repair.repaired) << repair.failure;
+    EXPECT_TRUE(repair.failure.empty());
+    total_iterations += repair.report.iterations;
+    HL::movable_vertices(mesh, repair.irregularity.faces, std::inserter(movable, movable.end()));
+  }
+  EXPECT_EQ(iterations.size(), total_iterations);
+
+  // Each defect is mostly gone: the RMS distance to the undented surface over the defect's
+  // vertices falls far below the defect's height.
+  for (const auto& d : defects) {
+    double before = 0, after = 0;
+    std::size_t count = 0;
+    for (auto v : vertices(mesh))
+      if (CGAL::squared_distance(undented.point(v), d.centre) < d.radius * d.radius) {
+        before += CGAL::squared_distance(dented.point(v), undented.point(v));
+        after += CGAL::squared_distance(mesh.point(v), undented.point(v));
+        ++count;
+      }
+    before = std::sqrt(before / double(count));
+    after = std::sqrt(after / double(count));
+    EXPECT_LT(after, 0.2 * before);
+  }
+  // Vertices that no region could move are bit-identical.
+  for (auto v : vertices(mesh))
+    if (movable.count(v) == 0) {
+      EXPECT_EQ(mesh.point(v), dented.point(v));
+    }
+}
+
+TEST(DetectAndFair, RecordsRegionsThatCannotBeFairedAndGoesOn)
+{
+  HB::Mesh mesh = smooth_hood(4, 40);
+  HB::inject_defects(mesh, 1, 4.0, 0.5, 4, [](auto) { return true; });
+  const HB::Mesh before = mesh;
+  const auto lights = HL::default_light_setup(mesh, HLP::number_of_lines(30));
+  // A margin of 0 and a tiny scale make regions too thin for some to hold a movable vertex;
+  // whatever happens, nothing becomes NaN and refused regions are untouched.
+  const auto repairs = CGAL::detect_and_fair_highlight_line_irregularities(
+      mesh, lights,
+      HLP::combine(HLP::region_margin(0), HLP::detection_scale(1.0),
+                   CGAL::parameters::number_of_iterations(3)));
+  for (auto v : vertices(mesh)) {
+    const auto& p = mesh.point(v);
+    EXPECT_TRUE(std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()));
+  }
+  for (const auto& repair : repairs)
+    if (!repair.repaired) {
+      EXPECT_FALSE(repair.failure.empty());
+    }
+  // An invalid fairing parameter is refused before anything moves.
+  mesh = before;
+  EXPECT_THROW(
+      CGAL::detect_and_fair_highlight_line_irregularities(mesh, lights, HLP::fairness_weight(-1.0)),
+      HL::Invalid_input);
+  for (auto v : vertices(mesh))
+    EXPECT_EQ(mesh.point(v), before.point(v));
+}
+
+} // namespace
