@@ -12,6 +12,7 @@
 
 #include "command_line.h"
 #include "highlight_picture.h"
+#include "region_overview.h"
 
 #include <array>
 #include <cmath>
@@ -95,11 +96,6 @@ Options parse(int argc, char** argv)
   return o;
 }
 
-pic::Point3 to_array(const K::Point_3& p)
-{
-  return {p.x(), p.y(), p.z()};
-}
-
 } // namespace
 
 int main(int argc, char** argv)
@@ -137,42 +133,12 @@ int main(int argc, char** argv)
 
     // The picture: the whole mesh from above the light plane, the regions tinted (red: the
     // strongest, orange: the others), the highlight lines of the first light setup on top.
-    std::vector<pic::Point3> points;
-    for (auto v : vertices(mesh))
-      points.push_back(to_array(mesh.point(v)));
-    std::vector<std::array<std::size_t, 3>> triangles;
-    for (face_descriptor f : faces(mesh)) {
-      std::array<std::size_t, 3> t{};
-      std::size_t j = 0;
-      for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
-        t[j++] = std::size_t(v);
-      triangles.push_back(t);
-    }
-    std::vector<std::optional<pic::RGB>> colors(num_faces(mesh));
-    for (std::size_t i = found.size(); i-- > 0;)
-      for (face_descriptor f : found[i].faces)
-        colors[std::size_t(f)] =
-            pic::mix(pic::colors::paint, i == 0 ? pic::colors::red : pic::colors::orange, 0.6);
-    const auto z = to_array(CGAL::ORIGIN + lights.plane_normal());
-    const auto h = to_array(CGAL::ORIGIN + lights.light_direction());
-    const pic::Vector3 view{-(0.5 * h[0] + z[0]), -(0.5 * h[1] + z[1]), -(0.5 * h[2] + z[2])};
-    const auto camera = pic::fit_camera(points, view, z, o.width, o.height);
-    pic::Renderer renderer(o.width, o.height, camera);
-    renderer.draw_mesh(points, triangles, pic::Surface_style{}, colors);
-    std::vector<std::vector<K::Point_3>> lines;
-    CGAL::compute_highlight_lines(
-        mesh, lights, std::back_inserter(lines),
-        HLP::combine(HLP::level_range(HL::default_level_range(mesh, lights)),
-                     HLP::facing_side_only(true)));
-    std::vector<std::vector<pic::Point3>> polylines;
-    for (const auto& l : lines) {
-      polylines.emplace_back();
-      for (const auto& p : l)
-        polylines.back().push_back(to_array(p));
-    }
-    renderer.draw_polylines(polylines);
+    std::vector<std::vector<face_descriptor>> regions;
+    for (const auto& r : found)
+      regions.push_back(r.faces);
+    const pic::Image image = region_overview::picture(mesh, lights, regions, o.width, o.height);
     const std::string picture = o.out + ".png";
-    if (!pic::write_png(picture, renderer.image()) || !regions_file) {
+    if (!pic::write_png(picture, image) || !regions_file) {
       std::cerr << "detect_highlight_line_irregularities: cannot write " << picture << " or "
                 << o.out << ".regions.txt\n";
       return 1;

@@ -13,10 +13,12 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/compute_highlight_lines.h>
+#include <CGAL/detect_highlight_line_irregularities.h>
 #include <CGAL/fair_with_highlight_lines.h>
 
 #include "command_line.h"
 #include "highlight_picture.h"
+#include "region_overview.h"
 
 #include <chrono>
 #include <cstdlib>
@@ -60,6 +62,12 @@ const char* usage =
     "  --normal X Y Z        the normal Z of the light plane  } a light tunnel above the mesh,\n"
     "  --spacing S           the distance between lights      } spacing from --lines)\n"
     "  --iterations N        iteration bound (default 50)\n"
+    "  --detect              automatic mode: find the irregular regions of the whole mesh\n"
+    "                        (CGAL::detect_and_fair_highlight_line_irregularities), fair each,\n"
+    "                        and write PREFIX_regions.png (before / after, regions tinted: red\n"
+    "                        the strongest) instead of the close-up; --center, --radius and\n"
+    "                        --region then only place the dent\n"
+    "  --max-regions N       with --detect: fair at most the N strongest regions (default: all)\n"
     "  --size W H            picture size per panel (default 800 600)\n"
     "  --help                this text\n";
 
@@ -76,6 +84,8 @@ struct Options
   std::optional<K::Vector_3> base, direction, normal;
   std::string region_file;
   int lines = 12, iterations = 50, width = 800, height = 600;
+  bool detect = false;
+  std::size_t max_regions = std::size_t(-1);
 };
 
 Options parse(int argc, char** argv)
@@ -104,7 +114,14 @@ Options parse(int argc, char** argv)
       o.dent = number(i, argc, argv);
     else if (a == "--lines")
       o.lines = int(number(i, argc, argv));
-    else if (a == "--iterations")
+    else if (a == "--detect")
+      o.detect = true;
+    else if (a == "--max-regions") {
+      const double n = number(i, argc, argv);
+      if (!(n >= 1))
+        fail("--max-regions must be at least 1");
+      o.max_regions = std::size_t(n);
+    } else if (a == "--iterations")
       o.iterations = int(number(i, argc, argv));
     else if (a == "--size") {
       o.width = int(number(i, argc, argv));
@@ -195,6 +212,66 @@ pic::Image picture(const Mesh& mesh, const std::vector<face_descriptor>& region,
     renderer.draw_polylines(curves, blue);
   }
   return renderer.image();
+}
+
+// Automatic mode: find the irregular regions of the whole mesh, fair them one at a time (the
+// strongest first), and show them before and after.
+int detect_and_fair(Mesh& mesh, const Options& o)
+{
+  const HL::Light_setup<K> lights =
+      o.base ? HL::Light_setup<K>(CGAL::ORIGIN + *o.base, *o.direction, *o.normal, *o.spacing)
+             : HL::default_light_setup(mesh, HLP::number_of_lines(60));
+  // Dense lines: a defect is only seen if several lines cross it.
+  std::cout << "detecting irregular regions (3 light directions x 4 offsets)...\n";
+  std::vector<HL::Highlight_line_irregularity<Mesh>> found;
+  CGAL::detect_highlight_line_irregularities(mesh, lights, std::back_inserter(found),
+                                             HLP::number_of_offsets(4));
+  std::cout << found.size() << " region(s) found";
+  if (found.size() > o.max_regions) {
+    found.resize(o.max_regions);
+    std::cout << ", the " << o.max_regions << " strongest are faired";
+  }
+  std::cout << ":\n";
+  std::vector<std::vector<face_descriptor>> regions;
+  for (const auto& r : found) {
+    regions.push_back(r.faces);
+    std::cout << "  score " << r.score << ", " << r.faces.size() << " faces around "
+              << mesh.point(r.peak_vertex) << ", seen in " << r.number_of_light_setups
+              << " light setups\n";
+  }
+  const pic::Image before = region_overview::picture(mesh, lights, regions, o.width, o.height);
+
+  std::size_t repaired = 0;
+  for (std::size_t i = 0; i < found.size(); ++i) {
+    std::cout << "region " << i + 1 << "/" << found.size() << ": " << std::flush;
+    try {
+      const HL::Fairing_report report = CGAL::fair_with_highlight_lines(
+          mesh, found[i].faces, lights, CGAL::parameters::number_of_iterations(o.iterations));
+      ++repaired;
+      std::cout << (report.converged() ? "converged" : "stopped") << " after " << report.iterations
+                << " iterations, " << report.number_of_movable_vertices << " movable vertices\n";
+    } catch (const HL::Invalid_input& e) {
+      std::cout << "not faired: " << e.what() << "\n";
+    } catch (const HL::Fairing_failure& e) {
+      std::cout << "not faired: " << e.what() << " (left unchanged)\n";
+    }
+  }
+  const pic::Image after = region_overview::picture(mesh, lights, regions, o.width, o.height);
+  pic::Layout layout;
+  layout.title = "Irregular regions found and faired";
+  const pic::Image both =
+      pic::side_by_side({before, after},
+                        {"before: " + std::to_string(found.size()) + " region(s) found",
+                         "after: " + std::to_string(repaired) + " faired"},
+                        layout);
+  if (!pic::write_png(o.out + "_regions.png", both) ||
+      !CGAL::IO::write_polygon_mesh(o.out + "_faired.off", mesh,
+                                    CGAL::parameters::stream_precision(17))) {
+    std::cerr << "fair_with_highlight_lines: cannot write the output files\n";
+    return 1;
+  }
+  std::cout << "wrote " << o.out << "_regions.png and " << o.out << "_faired.off\n";
+  return 0;
 }
 
 } // namespace
@@ -293,6 +370,9 @@ int main(int argc, char** argv)
       CGAL::IO::write_polygon_mesh(o.out + "_dented.off", mesh,
                                    CGAL::parameters::stream_precision(17));
     }
+
+    if (o.detect)
+      return detect_and_fair(mesh, o);
 
     std::vector<std::vector<K::Point_3>> desired;
     HL::desired_highlight_lines(mesh, region, lights, std::back_inserter(desired));
