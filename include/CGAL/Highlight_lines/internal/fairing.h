@@ -469,7 +469,8 @@ private:
   }
 
   // Moves the movable vertices by x_i N_i, halving the step while a triangle would flip or
-  // degenerate. Returns the scale applied.
+  // degenerate, with respect to the start of the step and to the input mesh: steps that each
+  // turn a triangle by less than 90 degrees can add up to a flip. Returns the scale applied.
   double move_without_flips(const std::vector<double>& x, const std::vector<Vec3>& directions,
                             Fairing_report& report)
   {
@@ -484,6 +485,8 @@ private:
     std::vector<Vec3> before;
     for (int f : faces)
       before.push_back(face_cross(f));
+    if (input_face_cross_.empty()) // the first step: the mesh is still the input
+      input_face_cross_ = before;
     std::vector<Vec3> start(region_.movable.size());
     for (std::size_t i = 0; i < region_.movable.size(); ++i)
       start[i] = position(region_.movable[i]);
@@ -505,7 +508,7 @@ private:
         const Vec3& p2 = moved[std::size_t(c[2])];
         const Vec3 n = cross3({p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]},
                               {p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]});
-        ok = dot3(n, before[j]) > 0;
+        ok = dot3(n, before[j]) > 0 && dot3(n, input_face_cross_[j]) > 0;
       }
       if (!ok)
         continue;
@@ -531,7 +534,8 @@ private:
   std::vector<Desired_line> desired_;
   std::vector<std::pair<vertex_descriptor, Point>> checkpoint_;
   std::vector<double> previous_solution_;
-  double difference_trace_ = 0; // trace of the q_diff part of the last program
+  std::vector<Vec3> input_face_cross_; // of the faces around movable vertices, before any step
+  double difference_trace_ = 0;        // trace of the q_diff part of the last program
   double mean_edge_length_ = 1, length_scale_ = 1;
 };
 
