@@ -17,7 +17,8 @@ namespace Highlight_lines {
 
 Exception thrown by the functions of this package when the user's input cannot be processed:
 an invalid light setup, a face that is not a triangle, a non-finite coordinate, a degenerate
-face, a face range that is empty or does not belong to the mesh, an invalid named parameter.
+face, a face range that is empty or does not belong to the mesh, an invalid named parameter, a
+fairing region too small or too large for the fairing's double arithmetic.
 
 Whenever this exception is thrown, the mesh passed by the user is left exactly as it was.
 The message names the problem and, where there is one, the element (vertex or face index,
@@ -35,7 +36,8 @@ public:
     EMPTY_FACE_RANGE,      ///< no face given where at least one is needed
     FACE_NOT_IN_MESH,      ///< a face descriptor that does not belong to the mesh
     NO_MOVABLE_VERTEX,     ///< a fairing region without any movable vertex
-    INVALID_PARAMETER      ///< a named parameter with a value out of its domain
+    INVALID_PARAMETER,     ///< a named parameter with a value out of its domain
+    SCALE_OUT_OF_RANGE     ///< a fairing region whose size is outside [1e-60, 1e60]
   };
 
   /// Returned by `element()` when the problem is not attached to one mesh element.

@@ -100,6 +100,17 @@ public:
       }
     mean_edge_length_ = length_sum / double((std::max)(edges, std::size_t(1)));
     length_scale_ = std::sqrt(area);
+    // The fairing's double arithmetic takes lengths to the fourth power (squared areas in the
+    // cotangent weights, area^{3/2} in q_diff's normalisation): beyond this range they over- or
+    // underflow, and a sound region would be refused as degenerate or faired with NaN weights.
+    const double smallest = 1e-60, largest = 1e60;
+    if (!(mean_edge_length_ >= smallest && mean_edge_length_ <= largest &&
+          length_scale_ >= smallest && length_scale_ <= largest))
+      throw Invalid_input(Invalid_input::Problem::SCALE_OUT_OF_RANGE,
+                          "fair_with_highlight_lines(): the region's size (mean edge length " +
+                              std::to_string(mean_edge_length_) +
+                              ") is outside the range [1e-60, 1e60] the fairing supports; "
+                              "scale the mesh and the light setup towards unit size");
   }
 
   Fairing_report run(const std::function<bool(const Fairing_report::Iteration&)>& visitor)
