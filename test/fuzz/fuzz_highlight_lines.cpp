@@ -51,6 +51,23 @@ typedef Mesh::Vertex_index Vertex;
 namespace HL = CGAL::Highlight_lines;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
+// Outcome counts, printed at exit when HL_FUZZ_STATS is set: how deep the inputs get.
+struct Statistics
+{
+  std::map<std::string, std::size_t> counts;
+  ~Statistics()
+  {
+    if (std::getenv("HL_FUZZ_STATS"))
+      for (const auto& entry : counts)
+        std::fprintf(stderr, "%-28s %zu\n", entry.first.c_str(), entry.second);
+  }
+} statistics;
+
+void count(const char* outcome)
+{
+  ++statistics.counts[outcome];
+}
+
 [[noreturn]] void bug(const char* what)
 {
   std::fprintf(stderr, "fuzz_highlight_lines: BUG: %s\n", what);
@@ -243,7 +260,9 @@ void check_model(const Mesh& mesh, const HL::Light_setup<K>& lights)
       for (const Point& p : polyline)
         if (!finite(p))
           bug("non-finite polyline point");
+    count(model.lines().empty() ? "model: no line" : "model: lines");
   } catch (const HL::Invalid_input&) {
+    count("model: Invalid_input");
   }
   if (!same_bits(before, coordinates(mesh)))
     bug("compute_highlight_lines changed the mesh");
@@ -267,14 +286,17 @@ void check_fairing(Mesh& mesh, const HL::Light_setup<K>& lights, const Parameter
     CGAL::fair_with_highlight_lines(mesh, region, lights,
                                     CGAL::parameters::number_of_iterations(1 + p.iterations % 3));
   } catch (const HL::Invalid_input&) {
+    count("fairing: Invalid_input");
     if (!same_bits(before, coordinates(mesh)))
       bug("Invalid_input thrown, but the mesh changed");
     return;
   } catch (const HL::Fairing_failure&) {
+    count("fairing: Fairing_failure");
     if (!same_bits(before, coordinates(mesh)))
       bug("Fairing_failure thrown, but the mesh was not restored");
     return;
   }
+  count(same_bits(before, coordinates(mesh)) ? "fairing: nothing moved" : "fairing: moved");
   std::vector<Vertex> movable;
   HL::movable_vertices(mesh, region, std::back_inserter(movable));
   const std::set<Vertex> may_move(movable.begin(), movable.end());
@@ -301,14 +323,19 @@ void check_fairing(Mesh& mesh, const HL::Light_setup<K>& lights, const Parameter
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
   const std::string text(reinterpret_cast<const char*>(data), size);
-  if (!is_simple_off(text))
+  if (!is_simple_off(text)) {
+    count("input: not simple OFF");
     return 0;
+  }
   const Parameters p = parameters_of(text);
   Mesh mesh;
   try {
-    if (!read_mesh(text, p.soup % 2 == 1, mesh))
+    if (!read_mesh(text, p.soup % 2 == 1, mesh)) {
+      count("input: reader failed");
       return 0;
+    }
   } catch (const std::exception&) { // CGAL's reader and repair functions, not ours
+    count("input: reader threw");
     return 0;
   }
 
@@ -316,6 +343,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     lights.emplace(lights_for(mesh, p.light));
   } catch (const HL::Invalid_input&) {
+    count("lights: Invalid_input");
     return 0;
   }
   check_model(mesh, *lights);
