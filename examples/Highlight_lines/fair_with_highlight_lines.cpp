@@ -40,9 +40,10 @@ namespace {
 const char* usage =
     "usage: fair_with_highlight_lines [MESH] [options]\n"
     "\n"
-    "Fairs a region of a triangle mesh so that the surface and its highlight lines become\n"
-    "smooth, and writes PREFIX.png (before / after, close-up), PREFIX_faired.off and, when a\n"
-    "dent was added, PREFIX_dented.off.\n"
+    "Shows where the highlight lines of a triangle mesh are irregular (PREFIX_irregularities.png)\n"
+    "and fairs a region so that the surface and its highlight lines become smooth: writes\n"
+    "PREFIX.png (before / after, close-up), PREFIX_faired.off and, when a dent was added,\n"
+    "PREFIX_dented.off.\n"
     "MESH defaults to the bundled VW Beetle body, into whose roof a dent is pressed first.\n"
     "\n"
     "options:\n"
@@ -214,31 +215,42 @@ pic::Image picture(const Mesh& mesh, const std::vector<face_descriptor>& region,
   return renderer.image();
 }
 
+// The irregular regions of the whole mesh, found by a light sweep with dense lines (a defect
+// is only seen if several lines cross it), the strongest first; printed.
+std::vector<HL::Highlight_line_irregularity<Mesh>>
+find_irregularities(const Mesh& mesh, const HL::Light_setup<K>& lights)
+{
+  std::cout << "looking for irregular highlight lines (3 light directions x 4 offsets)...\n";
+  std::vector<HL::Highlight_line_irregularity<Mesh>> found;
+  CGAL::detect_highlight_line_irregularities(mesh, lights, std::back_inserter(found),
+                                             HLP::number_of_offsets(4));
+  std::cout << found.size() << " irregular region(s), strongest first:\n";
+  for (const auto& r : found)
+    std::cout << "  score " << r.score << ", " << r.faces.size() << " faces around "
+              << mesh.point(r.peak_vertex) << ", seen in " << r.number_of_light_setups
+              << " light setups\n";
+  return found;
+}
+
+HL::Light_setup<K> sweep_lights(const Mesh& mesh, const Options& o)
+{
+  return o.base ? HL::Light_setup<K>(CGAL::ORIGIN + *o.base, *o.direction, *o.normal, *o.spacing)
+                : HL::default_light_setup(mesh, HLP::number_of_lines(60));
+}
+
 // Automatic mode: find the irregular regions of the whole mesh, fair them one at a time (the
 // strongest first), and show them before and after.
 int detect_and_fair(Mesh& mesh, const Options& o)
 {
-  const HL::Light_setup<K> lights =
-      o.base ? HL::Light_setup<K>(CGAL::ORIGIN + *o.base, *o.direction, *o.normal, *o.spacing)
-             : HL::default_light_setup(mesh, HLP::number_of_lines(60));
-  // Dense lines: a defect is only seen if several lines cross it.
-  std::cout << "detecting irregular regions (3 light directions x 4 offsets)...\n";
-  std::vector<HL::Highlight_line_irregularity<Mesh>> found;
-  CGAL::detect_highlight_line_irregularities(mesh, lights, std::back_inserter(found),
-                                             HLP::number_of_offsets(4));
-  std::cout << found.size() << " region(s) found";
+  const HL::Light_setup<K> lights = sweep_lights(mesh, o);
+  std::vector<HL::Highlight_line_irregularity<Mesh>> found = find_irregularities(mesh, lights);
   if (found.size() > o.max_regions) {
     found.resize(o.max_regions);
-    std::cout << ", the " << o.max_regions << " strongest are faired";
+    std::cout << "the " << o.max_regions << " strongest are faired\n";
   }
-  std::cout << ":\n";
   std::vector<std::vector<face_descriptor>> regions;
-  for (const auto& r : found) {
+  for (const auto& r : found)
     regions.push_back(r.faces);
-    std::cout << "  score " << r.score << ", " << r.faces.size() << " faces around "
-              << mesh.point(r.peak_vertex) << ", seen in " << r.number_of_light_setups
-              << " light setups\n";
-  }
   const pic::Image before = region_overview::picture(mesh, lights, regions, o.width, o.height);
 
   std::size_t repaired = 0;
@@ -373,6 +385,19 @@ int main(int argc, char** argv)
 
     if (o.detect)
       return detect_and_fair(mesh, o);
+
+    // Where the highlight lines are irregular, over the whole mesh (the user's region is faired
+    // below; --detect fairs these instead).
+    {
+      const HL::Light_setup<K> sweep = sweep_lights(mesh, o);
+      std::vector<std::vector<face_descriptor>> regions;
+      for (const auto& r : find_irregularities(mesh, sweep))
+        regions.push_back(r.faces);
+      if (!pic::write_png(o.out + "_irregularities.png",
+                          region_overview::picture(mesh, sweep, regions, o.width, o.height)))
+        fail("cannot write " + o.out + "_irregularities.png");
+      std::cout << "wrote " << o.out << "_irregularities.png (tinted: the irregular regions)\n";
+    }
 
     std::vector<std::vector<K::Point_3>> desired;
     HL::desired_highlight_lines(mesh, region, lights, std::back_inserter(desired));
