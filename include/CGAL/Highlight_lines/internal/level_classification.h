@@ -6,6 +6,7 @@
 
 #include <CGAL/Highlight_lines/Light_setup.h>
 #include <CGAL/Highlight_lines/internal/Local_mesh.h>
+#include <CGAL/Highlight_lines/internal/parallel.h>
 #include <CGAL/Highlight_lines/internal/vertex_normals.h>
 
 #include <CGAL/Interval_nt.h>
@@ -14,6 +15,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -25,12 +27,19 @@ namespace internal {
 // incident to a vertex agree on it by construction.
 struct Vertex_level
 {
-  long long level = 0;         // k with k·s <= d < (k+1)·s
-  signed char normal_side = 0; // sign of Z·Ñ; 0: the normal line is parallel to S, d undefined
-  bool on_level = false;       // d == k·s exactly
-  bool out_of_range = false;   // |d/s| >= 2^50: normal almost parallel to S, levels unusable
-  bool turned_away = false;    // Z·Ñ < 0 and only the side facing the lights is wanted
-  double distance = 0;         // d in double (exactly k·s when on_level)
+  // 16 bytes (written for every vertex in every sweep): the level and the flags share a word.
+  long long level : 58;        // k with k·s <= d < (k+1)·s
+  signed char normal_side : 2; // sign of Z·Ñ; 0: the normal line is parallel to S, d undefined
+  bool on_level : 1;           // d == k·s exactly
+  bool out_of_range : 1;       // |d/s| >= 2^50: normal almost parallel to S, levels unusable
+  bool turned_away : 1;        // Z·Ñ < 0 and only the side facing the lights is wanted
+  double distance;             // d in double (exactly k·s when on_level)
+
+  Vertex_level()
+      : level(0), normal_side(0), on_level(false), out_of_range(false), turned_away(false),
+        distance(0)
+  {
+  }
 
   bool defined() const { return normal_side != 0 && !out_of_range && !turned_away; }
 
@@ -61,18 +70,20 @@ template <typename TriangleMesh>
 class Level_classifier
 {
 private:
-  // The terms of E in double for one vertex, with their magnitudes and the depth bound.
+  // The terms of E in double for one vertex, with bounds on their rounding errors (NaN when
+  // not trusted).
   struct Terms
   {
-    double num = 0, num_magnitude = 0, den = 0, den_magnitude = 0, depth = 0;
-    bool trusted = true;
+    double num = 0, num_bound = 0, den = 0, den_bound = 0, bound_factor = 0;
   };
 
 public:
   Level_classifier(const Local_mesh<TriangleMesh>& lm, const Vertex_normals& vn,
                    const std::array<double, 3>& a, const std::array<double, 3>& h,
                    const std::array<double, 3>& z, double s)
-      : lm_(lm), vn_(vn), a_(a), h_(h), z_(z), s_(s)
+      : lm_(lm), vn_(vn), a_(a), h_(h), z_(z),
+        s_(s), habs_{std::abs(h[0]), std::abs(h[1]), std::abs(h[2])},
+        zabs_sum_(std::abs(z[0]) + std::abs(z[1]) + std::abs(z[2]))
   {
   }
 
@@ -84,28 +95,24 @@ public:
     Vertex_level result;
     const double* p = lm_.point(v);
     const double* n = &vn_.normal[3 * std::size_t(v)];
-    const double* nm = &vn_.normal_magnitude[3 * std::size_t(v)];
+    // The bounds use max_k m(Ñ)_k (folded into vn_.bound with the depth) instead of the
+    // components of m(Ñ): looser by at most a factor 3, one value read per vertex.
     const double w[3] = {p[0] - a_[0], p[1] - a_[1], p[2] - a_[2]};
     const double wm[3] = {std::abs(p[0]) + std::abs(a_[0]), std::abs(p[1]) + std::abs(a_[1]),
                           std::abs(p[2]) + std::abs(a_[2])};
     const double x[3] = {w[1] * h_[2] - w[2] * h_[1], w[2] * h_[0] - w[0] * h_[2],
                          w[0] * h_[1] - w[1] * h_[0]};
-    const double xm[3] = {wm[1] * std::abs(h_[2]) + wm[2] * std::abs(h_[1]),
-                          wm[2] * std::abs(h_[0]) + wm[0] * std::abs(h_[2]),
-                          wm[0] * std::abs(h_[1]) + wm[1] * std::abs(h_[0])};
+    const double xm = (wm[1] * habs_[2] + wm[2] * habs_[1]) +
+                      (wm[2] * habs_[0] + wm[0] * habs_[2]) + (wm[0] * habs_[1] + wm[1] * habs_[0]);
     Terms t;
+    t.bound_factor = vn_.bound[std::size_t(v)]; // NaN: take the exact path
     t.num = x[0] * n[0] + x[1] * n[1] + x[2] * n[2];
-    t.num_magnitude = xm[0] * nm[0] + xm[1] * nm[1] + xm[2] * nm[2];
+    t.num_bound = t.bound_factor * xm;
     t.den = z_[0] * n[0] + z_[1] * n[1] + z_[2] * n[2];
-    t.den_magnitude = std::abs(z_[0]) * nm[0] + std::abs(z_[1]) * nm[1] + std::abs(z_[2]) * nm[2];
-    t.depth = double(vn_.valence[std::size_t(v)] + 16);
-    // Face cross products in the subnormal range carry absolute errors the relative bound
-    // does not cover: decide such vertices with intervals and exact arithmetic.
-    t.trusted = nm[0] + nm[1] + nm[2] > 1e-280;
+    t.den_bound = t.bound_factor * zabs_sum_;
 
     // Side of the light plane the normal points to.
-    const double den_bound = t.depth * error_per_operation * t.den_magnitude;
-    if (t.trusted && std::abs(t.den) > den_bound && den_bound > min_magnitude)
+    if (std::abs(t.den) > t.den_bound && t.den_bound > min_magnitude)
       result.normal_side = t.den > 0 ? 1 : -1;
     else {
       ++stats.static_filter_failures;
@@ -189,9 +196,8 @@ private:
   {
     const double ms = double(m) * s_;
     const double e = t.num - ms * t.den;
-    const double magnitude = t.num_magnitude + std::abs(ms) * t.den_magnitude;
-    const double bound = t.depth * error_per_operation * magnitude;
-    if (t.trusted && std::abs(e) > bound && bound > min_magnitude && std::isfinite(bound))
+    const double bound = t.num_bound + std::abs(ms) * t.den_bound;
+    if (std::abs(e) > bound && bound > min_magnitude && std::isfinite(bound))
       return e > 0 ? 1 : -1;
     ++stats.static_filter_failures;
     return exact_sign(v, &m, stats);
@@ -234,7 +240,104 @@ private:
   const Vertex_normals& vn_;
   std::array<double, 3> a_, h_, z_;
   double s_;
+  std::array<double, 3> habs_;
+  double zabs_sum_;
 };
+
+// A compact key of a vertex class, so that the hot loops over edges and faces read 8 bytes
+// per vertex and nothing else: for a defined vertex, its band
+//   b = 2k + 1 when k·s < d < (k+1)·s,  b = 2k when d = k·s  (|b| <= 2^51 + 1),
+// plus key_side_offset when its normal points away from the light plane (Z·Ñ < 0); an odd
+// sentinel when d is undefined. Hence: equal keys have no level strictly between them; the
+// parity is that of the band (odd: strictly inside a band); two ends of an edge see the light
+// plane from the same side iff their keys lie on the same side of key_side_offset / 2.
+constexpr long long key_side_offset = 1LL << 53;
+constexpr long long undefined_key = (std::numeric_limits<long long>::min)() + 1;
+
+inline long long level_key(const Vertex_level& l)
+{
+  // The sentinel is odd: faces and edges with undefined ends take the quick rejections.
+  if (!l.defined())
+    return undefined_key;
+  return 2 * (long long)(l.level) + (l.on_level ? 0 : 1) +
+         (l.normal_side < 0 ? key_side_offset : 0);
+}
+
+// The band of a defined key (see level_key()).
+inline long long key_band(long long key)
+{
+  return key > key_side_offset / 2 ? key - key_side_offset : key;
+}
+
+// Whether d is continuous along an edge whose ends have these keys: both defined, with the
+// same side of the light plane.
+inline bool keys_usable(long long a, long long b)
+{
+  return a != undefined_key && b != undefined_key &&
+         (a > key_side_offset / 2) == (b > key_side_offset / 2);
+}
+
+// The level k of a band: floor(b / 2).
+inline long long band_level(long long band)
+{
+  return band >> 1;
+}
+
+// Sign of d - m·s for a vertex of band b.
+inline int compare_band_to_level(long long band, long long m)
+{
+  return band > 2 * m ? 1 : (band < 2 * m ? -1 : 0);
+}
+
+// What a sweep's classification pass gathers besides the classes.
+struct Classification_summary
+{
+  std::size_t undefined = 0;    // Z·Ñ = 0
+  std::size_t out_of_range = 0; // |d/s| >= 2^50
+  std::vector<int> on_level;    // defined vertices with d = k·s exactly, increasing
+};
+
+// Classifies the vertices [0, nv) (levels, keys), in one pass; concurrently over blocks of
+// vertices with a parallel tag, with the same result.
+template <typename ConcurrencyTag, typename TriangleMesh>
+void classify_vertices(const Level_classifier<TriangleMesh>& classifier, std::size_t nv,
+                       bool facing_side_only, std::vector<Vertex_level>& levels,
+                       std::vector<long long>& keys, Classification_summary& summary,
+                       Classification_statistics& stats)
+{
+  levels.resize(nv);
+  keys.resize(nv);
+  const Chunks chunks = chunks_for<ConcurrencyTag>(nv, std::size_t(1) << 14);
+  struct Part
+  {
+    Classification_statistics stats;
+    std::size_t undefined = 0, out_of_range = 0;
+    std::vector<int> on_level;
+  };
+  std::vector<Part> parts(chunks.size());
+  for_each_chunk<ConcurrencyTag>(chunks, [&](std::size_t c, std::size_t b, std::size_t e) {
+    Part& part = parts[c];
+    for (std::size_t v = b; v < e; ++v) {
+      const Vertex_level l = classifier.classify(int(v), part.stats, facing_side_only);
+      levels[v] = l;
+      const long long key = level_key(l);
+      keys[v] = key;
+      if (!(key & 1))
+        part.on_level.push_back(int(v)); // even keys: defined, on a level
+      part.undefined += l.normal_side == 0;
+      part.out_of_range += l.out_of_range;
+    }
+  });
+  summary.undefined = summary.out_of_range = 0;
+  summary.on_level.clear();
+  for (Part& part : parts) {
+    stats.static_filter_failures += part.stats.static_filter_failures;
+    stats.interval_filter_failures += part.stats.interval_filter_failures;
+    summary.undefined += part.undefined;
+    summary.out_of_range += part.out_of_range;
+    summary.on_level.insert(summary.on_level.end(), part.on_level.begin(), part.on_level.end());
+  }
+}
 
 } // namespace internal
 } // namespace Highlight_lines
