@@ -196,6 +196,7 @@ public:
   Model compute(const Lights& lights,
                 const NamedParameters& np = CGAL::parameters::default_values()) const
   {
+    raw_.keep_levels = false; // the model needs only the keys and d values
     compute_raw(lights, level_window(np), facing_side_only(np), raw_);
     const internal::Highlight_nodes& nodes = raw_.nodes;
     const internal::Traced_lines& traced = raw_.lines;
@@ -238,14 +239,16 @@ public:
   /// \cond SKIP_IN_MANUAL
   const internal::Local_mesh<TriangleMesh>& local_mesh() const { return mesh_; }
   const internal::Vertex_normals& vertex_normals() const { return normals_; }
-  const std::vector<internal::Vertex_level>& last_vertex_levels() const { return raw_.levels; }
   const internal::Classification_statistics& statistics() const { return statistics_; }
 
   // The model in local ids, as the fairing works with it.
   struct Raw_model
   {
+    // The classes of the vertices: filled only if keep_levels (compute() does not need them).
     std::vector<internal::Vertex_level> levels;
-    std::vector<long long> keys; // internal::level_key() of each vertex
+    bool keep_levels = true;
+    std::vector<long long> keys;   // internal::level_key() of each vertex
+    std::vector<double> distances; // d of each vertex (Vertex_level::distance)
     internal::Classification_summary summary;
     internal::Highlight_nodes nodes;
     internal::Highlight_segments segments;
@@ -259,8 +262,8 @@ public:
   void compute_raw(const Lights& lights, const internal::Level_window& window,
                    bool facing_side_only, Raw_model& out) const
   {
-    classify(lights, out.levels, out.keys, out.summary, facing_side_only);
-    internal::compute_highlight_nodes<ConcurrencyTag>(mesh_, owned_edges_, out.levels, out.keys,
+    classify(lights, out, facing_side_only);
+    internal::compute_highlight_nodes<ConcurrencyTag>(mesh_, owned_edges_, out.keys, out.distances,
                                                       out.summary.on_level, lights.spacing_value(),
                                                       window, out.nodes);
     internal::connect_highlight_nodes<ConcurrencyTag>(mesh_, out.keys, out.nodes, window,
@@ -297,21 +300,19 @@ public:
   void classify(const Lights& lights, std::vector<internal::Vertex_level>& levels,
                 bool facing_side_only = false) const
   {
-    std::vector<long long> keys;
-    internal::Classification_summary summary;
-    classify(lights, levels, keys, summary, facing_side_only);
+    Raw_model model;
+    classify(lights, model, facing_side_only);
+    levels = std::move(model.levels);
   }
 
-  void classify(const Lights& lights, std::vector<internal::Vertex_level>& levels,
-                std::vector<long long>& keys, internal::Classification_summary& summary,
-                bool facing_side_only) const
+  void classify(const Lights& lights, Raw_model& out, bool facing_side_only) const
   {
     const internal::Level_classifier<TriangleMesh> classifier(
         mesh_, normals_, lights.base_point_array(), lights.light_direction_array(),
         lights.plane_normal_array(), lights.spacing_value());
-    internal::classify_vertices<ConcurrencyTag>(classifier, mesh_.number_of_model_vertices,
-                                                facing_side_only, levels, keys, summary,
-                                                statistics_);
+    internal::classify_vertices<ConcurrencyTag>(
+        classifier, mesh_.number_of_model_vertices, facing_side_only,
+        out.keep_levels ? &out.levels : nullptr, out.keys, out.distances, out.summary, statistics_);
   }
   /// \endcond
 

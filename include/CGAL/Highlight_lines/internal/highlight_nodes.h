@@ -46,7 +46,8 @@ struct Active_face
   std::array<int, 3> vertices; // corners; edge j joins corners j and j + 1
   std::array<int, 3> edges;
   int face;
-  unsigned owned; // bit j: edge j is owned by this face (see compute_owned_edges())
+  unsigned owned; // bit j: edge j is owned by this face; bit j + 3: its canonical direction
+                  // is from corner j + 1 to corner j (see compute_owned_edges())
 };
 
 struct Highlight_nodes
@@ -96,7 +97,8 @@ inline long long interior_levels(long long key_a, long long key_b, const Level_w
 
 // Per model face, bit j set when the face is the first, in face order, to have its edge j:
 // the face that numbered it (edges are numbered in the order faces first reach them), and
-// the one that creates the edge's nodes in a sweep.
+// the one that creates the edge's nodes in a sweep; then bit j + 3 set when the canonical
+// direction of that edge (edge_vertices) is from corner j + 1 to corner j.
 template <typename TriangleMesh>
 void compute_owned_edges(const Local_mesh<TriangleMesh>& lm, std::vector<unsigned char>& owned)
 {
@@ -107,7 +109,8 @@ void compute_owned_edges(const Local_mesh<TriangleMesh>& lm, std::vector<unsigne
       const std::size_t e = std::size_t(lm.face_edges[f][std::size_t(j)]);
       if (!seen[e]) {
         seen[e] = 1;
-        owned[f] = static_cast<unsigned char>(owned[f] | (1u << j));
+        const bool reversed = lm.edge_vertices[e][0] != lm.face_vertices[f][std::size_t(j)];
+        owned[f] = static_cast<unsigned char>(owned[f] | (1u << j) | (reversed ? 8u << j : 0u));
       }
     }
 }
@@ -144,7 +147,7 @@ void for_each_owned_edge(const std::vector<Active_face>& active, const std::vect
 {
   for (std::size_t i = begin; i < end; ++i) {
     const Active_face& face = active[i];
-    if (face.owned == 0)
+    if ((face.owned & 7u) == 0)
       continue;
     for (int j = 0; j < 3; ++j) {
       if (!(face.owned & (1u << j)))
@@ -165,8 +168,8 @@ void for_each_owned_edge(const std::vector<Active_face>& active, const std::vect
 template <typename ConcurrencyTag, typename TriangleMesh>
 void compute_highlight_nodes(const Local_mesh<TriangleMesh>& lm,
                              const std::vector<unsigned char>& owned_edges,
-                             const std::vector<Vertex_level>& levels,
                              const std::vector<long long>& keys,
+                             const std::vector<double>& distances,
                              const std::vector<int>& on_level_vertices, double spacing,
                              const Level_window& window, Highlight_nodes& out)
 {
@@ -201,7 +204,7 @@ void compute_highlight_nodes(const Local_mesh<TriangleMesh>& lm,
   }
   std::size_t vertex_nodes = 0;
   for (int v : on_level_vertices)
-    vertex_nodes += window.contains(levels[std::size_t(v)].level);
+    vertex_nodes += window.contains(band_level(key_band(keys[std::size_t(v)])));
   out.number_of_edge_nodes = chunk_offset.back();
   if (out.number_of_edge_nodes + vertex_nodes > std::size_t((std::numeric_limits<int>::max)()))
     throw std::length_error("highlight line model: more than 2^31 nodes; restrict it with "
@@ -219,9 +222,11 @@ void compute_highlight_nodes(const Local_mesh<TriangleMesh>& lm,
             return;
           const int edge = face.edges[std::size_t(j)];
           out.edge_first_node[std::size_t(edge)] = next_id;
-          const int va = lm.edge_vertices[std::size_t(edge)][0],
-                    vb = lm.edge_vertices[std::size_t(edge)][1];
-          const double da = levels[std::size_t(va)].distance, db = levels[std::size_t(vb)].distance;
+          // The canonical direction, without reading edge_vertices.
+          const bool reversed = (face.owned & (8u << j)) != 0;
+          const int va = face.vertices[std::size_t(reversed ? (j + 1) % 3 : j)],
+                    vb = face.vertices[std::size_t(reversed ? j : (j + 1) % 3)];
+          const double da = distances[std::size_t(va)], db = distances[std::size_t(vb)];
           const double* pa = lm.point(va);
           const double* pb = lm.point(vb);
           for (long long m = first; m < first + count; ++m) {
@@ -240,13 +245,13 @@ void compute_highlight_nodes(const Local_mesh<TriangleMesh>& lm,
   // 4. Vertex nodes: vertices whose d value equals m·s exactly.
   std::size_t id = out.number_of_edge_nodes;
   for (int v : on_level_vertices) {
-    const Vertex_level& l = levels[std::size_t(v)];
-    if (!window.contains(l.level))
+    const long long level = band_level(key_band(keys[std::size_t(v)]));
+    if (!window.contains(level))
       continue;
     Raw_node& node = out.nodes[id];
     node.edge = -1;
     node.vertex = v;
-    node.level = l.level;
+    node.level = level;
     node.parameter = 0;
     const double* p = lm.point(v);
     node.point = {p[0], p[1], p[2]};

@@ -54,6 +54,10 @@ struct Vertex_level
   }
 };
 
+// See level_key().
+constexpr long long key_side_offset = 1LL << 53;
+constexpr long long undefined_key = (std::numeric_limits<long long>::min)() + 1;
+
 // Statistics of the filter, for tests and benchmarks.
 struct Classification_statistics
 {
@@ -83,7 +87,10 @@ public:
                    const std::array<double, 3>& z, double s)
       : lm_(lm), vn_(vn), a_(a), h_(h), z_(z),
         s_(s), habs_{std::abs(h[0]), std::abs(h[1]), std::abs(h[2])},
-        zabs_sum_(std::abs(z[0]) + std::abs(z[1]) + std::abs(z[2]))
+        zabs_sum_(std::abs(z[0]) + std::abs(z[1]) + std::abs(z[2])),
+        inverse_s_(1 / s), habs_pair_{std::abs(h[1]) + std::abs(h[2]),
+                                      std::abs(h[0]) + std::abs(h[2]),
+                                      std::abs(h[0]) + std::abs(h[1])}
   {
   }
 
@@ -92,22 +99,96 @@ public:
   Vertex_level classify(int v, Classification_statistics& stats,
                         bool facing_side_only = false) const
   {
-    Vertex_level result;
-    const double* p = lm_.point(v);
+    Common_case c;
+    if (classify_common_case(v, facing_side_only, c))
+      return c.level();
+    return classify_in_general(v, stats, facing_side_only);
+  }
+
+  // The result of the common case (see classify_common_case()).
+  struct Common_case
+  {
+    long long k;
+    double d;
+    bool facing, turned_away;
+
+    Vertex_level level() const
+    {
+      Vertex_level result;
+      result.normal_side = facing ? 1 : -1;
+      result.turned_away = turned_away;
+      result.level = turned_away ? 0 : k;
+      result.distance = turned_away ? 0.0 : d;
+      return result;
+    }
+    long long key() const // level_key(level())
+    {
+      return turned_away ? undefined_key : 2 * k + 1 + (facing ? 0 : key_side_offset);
+    }
+  };
+
+  // The common case, without data-dependent branches (the side of the normal is random in
+  // vertex order): the side certain from the static bound, and either turned away, or
+  // k = floor(d/s) with both comparisons with k·s and (k+1)·s certain and d strictly between.
+  // Then the answer is the one of classify_in_general(), which starts with the same
+  // comparisons; otherwise returns false.
+  bool classify_common_case(int v, bool facing_side_only, Common_case& result) const
+  {
     const double* n = &vn_.normal[3 * std::size_t(v)];
-    // The bounds use max_k m(Ñ)_k (folded into vn_.bound with the depth) instead of the
-    // components of m(Ñ): looser by at most a factor 3, one value read per vertex.
+    const double* p = lm_.point(v);
+    const double bound_factor = vn_.bound[std::size_t(v)]; // NaN: not certain
+    const double den = z_[0] * n[0] + z_[1] * n[1] + z_[2] * n[2];
+    const double den_bound = bound_factor * zabs_sum_;
     const double w[3] = {p[0] - a_[0], p[1] - a_[1], p[2] - a_[2]};
     const double wm[3] = {std::abs(p[0]) + std::abs(a_[0]), std::abs(p[1]) + std::abs(a_[1]),
                           std::abs(p[2]) + std::abs(a_[2])};
     const double x[3] = {w[1] * h_[2] - w[2] * h_[1], w[2] * h_[0] - w[0] * h_[2],
                          w[0] * h_[1] - w[1] * h_[0]};
-    const double xm = (wm[1] * habs_[2] + wm[2] * habs_[1]) +
-                      (wm[2] * habs_[0] + wm[0] * habs_[2]) + (wm[0] * habs_[1] + wm[1] * habs_[0]);
+    // m(W x H) summed over its components, factored: (|h1| + |h2|) m(w0) + ...
+    const double xm = wm[0] * habs_pair_[0] + wm[1] * habs_pair_[1] + wm[2] * habs_pair_[2];
+    const double num = x[0] * n[0] + x[1] * n[1] + x[2] * n[2];
+    const double num_bound = bound_factor * xm;
+    const bool side_certain = (std::abs(den) > den_bound) & (den_bound > min_magnitude);
+    const bool facing = den > 0;
+    // Any guess of k will do (the bracket is certified); floor without a libm call.
+    const double d = num / den;
+    // The clamp maps NaN (den = 0) to guess_limit: the conversion below is always defined.
+    const double q = (std::max)(-guess_limit, (std::min)(guess_limit, d * inverse_s_));
+    long long k = static_cast<long long>(q);
+    k -= q < double(k) ? 1 : 0;
+    const double ms0 = double(k) * s_, ms1 = double(k + 1) * s_;
+    const double e0 = num - ms0 * den, e1 = num - ms1 * den;
+    const double b0 = num_bound + std::abs(ms0) * den_bound,
+                 b1 = num_bound + std::abs(ms1) * den_bound;
+    const bool bracket = (std::abs(e0) > b0) & (std::abs(e1) > b1) & (b0 > min_magnitude) &
+                         (b1 > min_magnitude) & (b0 < infinity) & (b1 < infinity) &
+                         ((e0 > 0) == facing) & ((e1 > 0) != facing) &
+                         (std::abs(d * inverse_s_) < guess_limit);
+    const bool turned_away = facing_side_only & !facing;
+    if (!(side_certain & (turned_away | bracket)))
+      return false;
+    result.k = k;
+    result.d = d;
+    result.facing = facing;
+    result.turned_away = turned_away;
+    return true;
+  }
+
+private:
+  static constexpr double guess_limit = double(1LL << 49);
+  static constexpr double infinity = std::numeric_limits<double>::infinity();
+
+  // Every case: certain signs from the static bound where it suffices, intervals and exact
+  // arithmetic otherwise.
+  Vertex_level classify_in_general(int v, Classification_statistics& stats,
+                                   bool facing_side_only) const
+  {
+    Vertex_level result;
+    const double* n = &vn_.normal[3 * std::size_t(v)];
+    // The bounds use max_k m(Ñ)_k (folded into vn_.bound with the depth) instead of the
+    // components of m(Ñ): looser by at most a factor 3, one value read per vertex.
     Terms t;
     t.bound_factor = vn_.bound[std::size_t(v)]; // NaN: take the exact path
-    t.num = x[0] * n[0] + x[1] * n[1] + x[2] * n[2];
-    t.num_bound = t.bound_factor * xm;
     t.den = z_[0] * n[0] + z_[1] * n[1] + z_[2] * n[2];
     t.den_bound = t.bound_factor * zabs_sum_;
 
@@ -121,9 +202,20 @@ public:
         return result;
     }
     if (facing_side_only && result.normal_side < 0) {
-      result.turned_away = true;
+      result.turned_away = true; // the position is not even read
       return result;
     }
+
+    const double* p = lm_.point(v);
+    const double w[3] = {p[0] - a_[0], p[1] - a_[1], p[2] - a_[2]};
+    const double wm[3] = {std::abs(p[0]) + std::abs(a_[0]), std::abs(p[1]) + std::abs(a_[1]),
+                          std::abs(p[2]) + std::abs(a_[2])};
+    const double x[3] = {w[1] * h_[2] - w[2] * h_[1], w[2] * h_[0] - w[0] * h_[2],
+                         w[0] * h_[1] - w[1] * h_[0]};
+    const double xm = (wm[1] * habs_[2] + wm[2] * habs_[1]) +
+                      (wm[2] * habs_[0] + wm[0] * habs_[2]) + (wm[0] * habs_[1] + wm[1] * habs_[0]);
+    t.num = x[0] * n[0] + x[1] * n[1] + x[2] * n[2];
+    t.num_bound = t.bound_factor * xm;
 
     // Find k with d - k·s >= 0 > d - (k+1)·s, deciding every comparison exactly. The double
     // estimate q is almost always right (two evaluations); where it is not (the double Ñ was
@@ -242,6 +334,8 @@ private:
   double s_;
   std::array<double, 3> habs_;
   double zabs_sum_;
+  double inverse_s_;
+  std::array<double, 3> habs_pair_;
 };
 
 // A compact key of a vertex class, so that the hot loops over edges and faces read 8 bytes
@@ -251,8 +345,6 @@ private:
 // sentinel when d is undefined. Hence: equal keys have no level strictly between them; the
 // parity is that of the band (odd: strictly inside a band); two ends of an edge see the light
 // plane from the same side iff their keys lie on the same side of key_side_offset / 2.
-constexpr long long key_side_offset = 1LL << 53;
-constexpr long long undefined_key = (std::numeric_limits<long long>::min)() + 1;
 
 inline long long level_key(const Vertex_level& l)
 {
@@ -297,16 +389,19 @@ struct Classification_summary
   std::vector<int> on_level;    // defined vertices with d = k·s exactly, increasing
 };
 
-// Classifies the vertices [0, nv) (levels, keys), in one pass; concurrently over blocks of
+// Classifies the vertices [0, nv) in one pass: their keys, d values (the distance of
+// Vertex_level) and, if `levels` is not null, their classes; concurrently over blocks of
 // vertices with a parallel tag, with the same result.
 template <typename ConcurrencyTag, typename TriangleMesh>
 void classify_vertices(const Level_classifier<TriangleMesh>& classifier, std::size_t nv,
-                       bool facing_side_only, std::vector<Vertex_level>& levels,
-                       std::vector<long long>& keys, Classification_summary& summary,
-                       Classification_statistics& stats)
+                       bool facing_side_only, std::vector<Vertex_level>* levels,
+                       std::vector<long long>& keys, std::vector<double>& distances,
+                       Classification_summary& summary, Classification_statistics& stats)
 {
-  levels.resize(nv);
+  if (levels != nullptr)
+    levels->resize(nv);
   keys.resize(nv);
+  distances.resize(nv);
   const Chunks chunks = chunks_for<ConcurrencyTag>(nv, std::size_t(1) << 14);
   struct Part
   {
@@ -318,10 +413,21 @@ void classify_vertices(const Level_classifier<TriangleMesh>& classifier, std::si
   for_each_chunk<ConcurrencyTag>(chunks, [&](std::size_t c, std::size_t b, std::size_t e) {
     Part& part = parts[c];
     for (std::size_t v = b; v < e; ++v) {
+      typename Level_classifier<TriangleMesh>::Common_case common;
+      if (classifier.classify_common_case(int(v), facing_side_only, common)) {
+        // Strictly inside a band, or turned away: no vertex node, defined or not counted.
+        if (levels != nullptr)
+          (*levels)[v] = common.level();
+        keys[v] = common.key();
+        distances[v] = common.turned_away ? 0.0 : common.d;
+        continue;
+      }
       const Vertex_level l = classifier.classify(int(v), part.stats, facing_side_only);
-      levels[v] = l;
+      if (levels != nullptr)
+        (*levels)[v] = l;
       const long long key = level_key(l);
       keys[v] = key;
+      distances[v] = l.distance;
       if (!(key & 1))
         part.on_level.push_back(int(v)); // even keys: defined, on a level
       part.undefined += l.normal_side == 0;
