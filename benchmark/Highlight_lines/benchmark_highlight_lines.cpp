@@ -4,7 +4,8 @@
 //
 // Counters: `x_normals` = time of the benchmark / time of compute_vertex_normals (best of 5,
 // measured once per run); `nodes` = size of the output. Argument 0: the example program's
-// light tunnel; 1: every level.
+// light tunnel; 1: every level. With TBB, the model and the sweep are also measured with
+// CGAL::Parallel_if_available_tag.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Highlight_lines/Highlight_line_sweeper.h>
 #include <CGAL/Highlight_lines/default_light_setup.h>
@@ -94,6 +95,8 @@ std::pair<long long, long long> levels_of(const benchmark::State& state,
 }
 
 // The whole model from scratch: flat copy, normals (eq. 3), classification, nodes, lines.
+// Tag: CGAL::Sequential_tag or CGAL::Parallel_if_available_tag (the `_parallel` variants).
+template <typename Tag>
 void BM_compute_highlight_lines(benchmark::State& state)
 {
   const Mesh& mesh = big_mesh();
@@ -104,7 +107,8 @@ void BM_compute_highlight_lines(benchmark::State& state)
   std::size_t nodes = 0;
   for (auto _ : state) {
     const auto start = std::chrono::steady_clock::now();
-    const auto model = CGAL::compute_highlight_lines(mesh, lights, CGAL::Emptyset_iterator(), np);
+    const auto model =
+        CGAL::compute_highlight_lines<Tag>(mesh, lights, CGAL::Emptyset_iterator(), np);
     total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     nodes = model.nodes().size();
   }
@@ -113,11 +117,12 @@ void BM_compute_highlight_lines(benchmark::State& state)
 }
 
 // A sweep step: lights moved, everything independent of them cached in the sweeper.
+template <typename Tag>
 void BM_sweep_update(benchmark::State& state)
 {
   const Mesh& mesh = big_mesh();
   const auto lights = HL::default_light_setup(mesh);
-  const HL::Highlight_line_sweeper<Mesh> sweeper(mesh);
+  const HL::Highlight_line_sweeper<Mesh, CGAL::Default, CGAL::Default, Tag> sweeper(mesh);
   const auto np = HL::parameters::combine(HL::parameters::level_range(levels_of(state, lights)),
                                           HL::parameters::facing_side_only(state.range(0) == 0));
   double total = 0;
@@ -137,8 +142,29 @@ void BM_sweep_update(benchmark::State& state)
 }
 
 BENCHMARK(BM_compute_vertex_normals)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_compute_highlight_lines)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_sweep_update)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_TEMPLATE(BM_compute_highlight_lines, CGAL::Sequential_tag)
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_TEMPLATE(BM_sweep_update, CGAL::Sequential_tag)
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+#ifdef CGAL_LINKED_WITH_TBB
+// With TBB: the same with CGAL::Parallel_if_available_tag (= Parallel_tag).
+BENCHMARK_TEMPLATE(BM_compute_highlight_lines, CGAL::Parallel_if_available_tag)
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_TEMPLATE(BM_sweep_update, CGAL::Parallel_if_available_tag)
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+#endif
 
 } // namespace
 

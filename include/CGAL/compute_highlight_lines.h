@@ -11,6 +11,7 @@
 #include <CGAL/Highlight_lines/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/tags.h>
 
 namespace CGAL {
 
@@ -33,6 +34,13 @@ right even for vertices exactly on a level. Where the normal of a vertex is para
 light plane (`Z·N = 0`), `d` is undefined: no node is placed on the edges at that vertex, nor
 on edges whose ends see the light plane from different sides; lines end there.
 
+\tparam ConcurrencyTag enables sequential versus parallel computation. Possible values are
+`CGAL::Sequential_tag` (the default), `CGAL::Parallel_tag` (requires TBB: a static assertion
+fails otherwise) and `CGAL::Parallel_if_available_tag`, e.g.
+`compute_highlight_lines<CGAL::Parallel_if_available_tag>(tm, lights, out)`. In parallel, the
+passes over faces, vertices and edges (normals, classification, nodes, connection) run
+concurrently with TBB; the result is bit for bit the sequential one (same nodes, same lines in
+the same order).
 \tparam TriangleMesh a model of `FaceGraph` whose faces are triangles
 \tparam GeomTraits a model of `Kernel`
 \tparam PolylineOutputIterator an output iterator accepting `std::vector<GeomTraits::Point_3>`
@@ -79,15 +87,17 @@ domain. Light setups are validated when they are constructed.
 
 \sa `Highlight_lines::Highlight_line_sweeper` to compute models for many light setups.
 */
-template <typename TriangleMesh, typename GeomTraits, typename PolylineOutputIterator,
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
+          typename GeomTraits, typename PolylineOutputIterator,
           typename NamedParameters = parameters::Default_named_parameters>
 Highlight_lines::Highlight_line_model<TriangleMesh, GeomTraits> compute_highlight_lines(
     const TriangleMesh& tm, const Highlight_lines::Light_setup<GeomTraits>& lights,
     PolylineOutputIterator out, const NamedParameters& np = parameters::default_values())
 {
   typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type Vertex_point_map;
-  const Highlight_lines::Highlight_line_sweeper<TriangleMesh, Vertex_point_map, GeomTraits> sweeper(
-      tm, np);
+  const Highlight_lines::Highlight_line_sweeper<TriangleMesh, Vertex_point_map, GeomTraits,
+                                                ConcurrencyTag>
+      sweeper(tm, np);
   auto model = sweeper.compute(lights, np);
   model.polylines(out);
   return model;

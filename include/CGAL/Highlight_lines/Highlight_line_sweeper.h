@@ -13,9 +13,12 @@
 #include <CGAL/Highlight_lines/internal/level_classification.h>
 #include <CGAL/Highlight_lines/internal/line_tracing.h>
 #include <CGAL/Highlight_lines/internal/node_connection.h>
+#include <CGAL/Highlight_lines/internal/parallel.h>
 #include <CGAL/Highlight_lines/internal/vertex_normals.h>
 
+#include <CGAL/Default.h>
 #include <CGAL/Kernel_traits.h>
+#include <CGAL/tags.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/boost/graph/properties.h>
@@ -26,6 +29,27 @@
 
 namespace CGAL {
 namespace Highlight_lines {
+namespace internal {
+
+// The template arguments of Highlight_line_sweeper, with CGAL::Default resolved.
+template <typename TriangleMesh, typename VertexPointMap>
+struct Sweeper_vertex_point_map
+{
+  typedef typename CGAL::Default::Get<
+      VertexPointMap,
+      typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::type type;
+};
+
+template <typename TriangleMesh, typename VertexPointMap, typename GeomTraits>
+struct Sweeper_geom_traits
+{
+  typedef typename CGAL::Default::Get<
+      GeomTraits, typename CGAL::Kernel_traits<
+                      typename boost::property_traits<typename Sweeper_vertex_point_map<
+                          TriangleMesh, VertexPointMap>::type>::value_type>::Kernel>::type type;
+};
+
+} // namespace internal
 
 /*!
 \ingroup PkgHighlightLinesRef
@@ -41,22 +65,43 @@ of linear light sources").
 
 When the mesh moves (e.g. during fairing), call `update_positions()`.
 
+With `ConcurrencyTag = CGAL::Parallel_tag` (or `CGAL::Parallel_if_available_tag` when TBB is
+linked), the passes over vertices, edges and faces run concurrently with TBB: the face cross
+products of the normals (their sums stay in the sequential order), the classification of the
+vertices, the placement of the nodes and their connection per face; tracing the lines and
+building the model stay sequential. The result is bit for bit the one of the sequential
+computation: same nodes, same lines, in the same order.
+
 \tparam TriangleMesh a model of `FaceGraph` whose faces are triangles
-\tparam VertexPointMap a model of `ReadablePropertyMap` from vertices to points
-\tparam GeomTraits a model of `Kernel`, the kernel of the light setups and of the model's points
+\tparam VertexPointMap a model of `ReadablePropertyMap` from vertices to points, or
+`CGAL::Default` (the internal point map of the mesh)
+\tparam GeomTraits a model of `Kernel`, the kernel of the light setups and of the model's
+points, or `CGAL::Default` (the kernel of the points)
+\tparam ConcurrencyTag enables sequential versus parallel computation. Possible values are
+`CGAL::Sequential_tag` (the default), `CGAL::Parallel_tag` (requires TBB: a static assertion
+fails otherwise) and `CGAL::Parallel_if_available_tag`. For example
+`Highlight_line_sweeper<Mesh, CGAL::Default, CGAL::Default, CGAL::Parallel_if_available_tag>`.
 */
 template <typename TriangleMesh,
           typename VertexPointMap =
-              typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type,
-          typename GeomTraits = typename CGAL::Kernel_traits<
-              typename boost::property_traits<VertexPointMap>::value_type>::Kernel>
+              typename internal::Sweeper_vertex_point_map<TriangleMesh, CGAL::Default>::type,
+          typename GeomTraits = typename internal::Sweeper_geom_traits<TriangleMesh, VertexPointMap,
+                                                                       CGAL::Default>::type,
+          typename ConcurrencyTag = CGAL::Sequential_tag>
 class Highlight_line_sweeper
 {
+  typedef typename internal::Sweeper_vertex_point_map<TriangleMesh, VertexPointMap>::type Vpm;
+  typedef typename internal::Sweeper_geom_traits<TriangleMesh, VertexPointMap, GeomTraits>::type Gt;
+  // Instantiating Is_parallel checks the tag (and that TBB is there for Parallel_tag).
+  static constexpr bool is_parallel = internal::Is_parallel<ConcurrencyTag>::value;
+
 public:
   /// The type of the models computed.
-  typedef Highlight_line_model<TriangleMesh, GeomTraits> Model;
+  typedef Highlight_line_model<TriangleMesh, Gt> Model;
   /// The type of the light setups.
-  typedef Light_setup<GeomTraits> Lights;
+  typedef Light_setup<Gt> Lights;
+  /// The concurrency tag.
+  typedef ConcurrencyTag Concurrency_tag;
 
   /*!
   Prepares the computation on `tm`.
@@ -93,24 +138,41 @@ public:
       internal::build_local_mesh(tm, get_parameter_reference(np, internal_np::face_range), false,
                                  vpm_, vim, fim, him, mesh_);
     compute_normals();
+    internal::compute_owned_edges(mesh_, owned_edges_);
   }
 
   /// Re-reads the points of all vertices involved from the vertex point map and recomputes
   /// the normals. \throws Invalid_input as the constructor.
   void update_positions()
   {
-    for (std::size_t v = 0; v < mesh_.vertex_handles.size(); ++v) {
-      const auto& p = get(vpm_, mesh_.vertex_handles[v]);
-      const double c[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-      for (int k = 0; k < 3; ++k) {
-        if (!std::isfinite(c[k]))
-          throw Invalid_input(Invalid_input::Problem::NON_FINITE_COORDINATE,
-                              "vertex " + std::to_string(mesh_.vertex_indices[v]) +
-                                  " has a non-finite coordinate " + internal::describe_point(c),
-                              mesh_.vertex_indices[v]);
-        mesh_.xyz[3 * v + std::size_t(k)] = c[k];
+    // Vertex order decides which non-finite coordinate is reported, also when parallel.
+    const std::size_t nv = mesh_.vertex_handles.size();
+    const internal::Chunks chunks = internal::chunks_for<ConcurrencyTag>(nv, std::size_t(1) << 14);
+    std::vector<std::size_t> first_bad(chunks.size(), nv);
+    internal::for_each_chunk<ConcurrencyTag>(
+        chunks, [&](std::size_t c, std::size_t b, std::size_t e) {
+          for (std::size_t v = b; v < e; ++v) {
+            const auto& p = get(vpm_, mesh_.vertex_handles[v]);
+            const double x[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()),
+                                 CGAL::to_double(p.z())};
+            if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2])) {
+              first_bad[c] = v;
+              return;
+            }
+            for (int k = 0; k < 3; ++k)
+              mesh_.xyz[3 * v + std::size_t(k)] = x[k];
+          }
+        });
+    for (std::size_t bad : first_bad)
+      if (bad < nv) {
+        const auto& p = get(vpm_, mesh_.vertex_handles[bad]);
+        const double c[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()),
+                             CGAL::to_double(p.z())};
+        throw Invalid_input(Invalid_input::Problem::NON_FINITE_COORDINATE,
+                            "vertex " + std::to_string(mesh_.vertex_indices[bad]) +
+                                " has a non-finite coordinate " + internal::describe_point(c),
+                            mesh_.vertex_indices[bad]);
       }
-    }
     compute_normals();
   }
 
@@ -134,6 +196,7 @@ public:
   Model compute(const Lights& lights,
                 const NamedParameters& np = CGAL::parameters::default_values()) const
   {
+    raw_.keep_levels = false; // the model needs only the keys and d values
     compute_raw(lights, level_window(np), facing_side_only(np), raw_);
     const internal::Highlight_nodes& nodes = raw_.nodes;
     const internal::Traced_lines& traced = raw_.lines;
@@ -147,7 +210,7 @@ public:
     for (std::size_t i = 0; i < kept; ++i) {
       const internal::Raw_node& raw = nodes.nodes[std::size_t(traced.new_order[i])];
       typename Model::Node& node = model_nodes[i];
-      node.point = typename GeomTraits::Point_3(raw.point[0], raw.point[1], raw.point[2]);
+      node.point = typename Gt::Point_3(raw.point[0], raw.point[1], raw.point[2]);
       node.level = raw.level;
       node.degree = std::size_t(traced.degree[std::size_t(traced.new_order[i])]);
       if (raw.edge >= 0) {
@@ -163,14 +226,9 @@ public:
       model_lines[i].is_closed = traced.lines[i].closed;
       model_lines[i].nodes.assign(traced.lines[i].nodes.begin(), traced.lines[i].nodes.end());
     }
-    std::size_t undefined = 0, out_of_range = 0;
-    for (std::size_t v = 0; v < mesh_.number_of_model_vertices; ++v) {
-      undefined += raw_.levels[v].normal_side == 0;
-      out_of_range += raw_.levels[v].out_of_range;
-    }
     return Model(lights, std::move(model_nodes), std::move(model_lines),
-                 raw_.segments.segments.size(), nodes.number_of_capped_edges, undefined,
-                 out_of_range);
+                 raw_.segments.segments.size(), nodes.number_of_capped_edges,
+                 raw_.summary.undefined, raw_.summary.out_of_range);
   }
 
   /// Number of faces the model is computed on.
@@ -181,14 +239,17 @@ public:
   /// \cond SKIP_IN_MANUAL
   const internal::Local_mesh<TriangleMesh>& local_mesh() const { return mesh_; }
   const internal::Vertex_normals& vertex_normals() const { return normals_; }
-  const std::vector<internal::Vertex_level>& last_vertex_levels() const { return raw_.levels; }
   const internal::Classification_statistics& statistics() const { return statistics_; }
 
   // The model in local ids, as the fairing works with it.
   struct Raw_model
   {
+    // The classes of the vertices: filled only if keep_levels (compute() does not need them).
     std::vector<internal::Vertex_level> levels;
-    std::vector<long long> keys; // internal::level_key() of each vertex
+    bool keep_levels = true;
+    std::vector<long long> keys;   // internal::level_key() of each vertex
+    std::vector<double> distances; // d of each vertex (Vertex_level::distance)
+    internal::Classification_summary summary;
     internal::Highlight_nodes nodes;
     internal::Highlight_segments segments;
     internal::Traced_lines lines; // node ids in lines are canonical ids: see node()
@@ -201,11 +262,12 @@ public:
   void compute_raw(const Lights& lights, const internal::Level_window& window,
                    bool facing_side_only, Raw_model& out) const
   {
-    classify(lights, out.levels, facing_side_only);
-    internal::compute_level_keys(out.levels, out.keys);
-    internal::compute_highlight_nodes(mesh_, out.levels, out.keys, lights.spacing_value(), window,
-                                      out.nodes);
-    internal::connect_highlight_nodes(mesh_, out.levels, out.keys, out.nodes, window, out.segments);
+    classify(lights, out, facing_side_only);
+    internal::compute_highlight_nodes<ConcurrencyTag>(mesh_, owned_edges_, out.keys, out.distances,
+                                                      out.summary.on_level, lights.spacing_value(),
+                                                      window, out.nodes);
+    internal::connect_highlight_nodes<ConcurrencyTag>(mesh_, out.keys, out.nodes, window,
+                                                      out.segments);
     internal::trace_lines(out.nodes.nodes, out.segments.segments, out.lines);
   }
 
@@ -238,23 +300,31 @@ public:
   void classify(const Lights& lights, std::vector<internal::Vertex_level>& levels,
                 bool facing_side_only = false) const
   {
+    Raw_model model;
+    classify(lights, model, facing_side_only);
+    levels = std::move(model.levels);
+  }
+
+  void classify(const Lights& lights, Raw_model& out, bool facing_side_only) const
+  {
     const internal::Level_classifier<TriangleMesh> classifier(
         mesh_, normals_, lights.base_point_array(), lights.light_direction_array(),
         lights.plane_normal_array(), lights.spacing_value());
-    levels.resize(mesh_.number_of_model_vertices);
-    for (std::size_t v = 0; v < mesh_.number_of_model_vertices; ++v)
-      levels[v] = classifier.classify(int(v), statistics_, facing_side_only);
+    internal::classify_vertices<ConcurrencyTag>(
+        classifier, mesh_.number_of_model_vertices, facing_side_only,
+        out.keep_levels ? &out.levels : nullptr, out.keys, out.distances, out.summary, statistics_);
   }
   /// \endcond
 
 private:
-  void compute_normals() { internal::compute_vertex_normals(mesh_, normals_); }
+  void compute_normals() { internal::compute_vertex_normals<ConcurrencyTag>(mesh_, normals_); }
 
   const TriangleMesh* tm_;
-  VertexPointMap vpm_;
+  Vpm vpm_;
   internal::Local_mesh<TriangleMesh> mesh_;
   internal::Vertex_normals normals_;
-  mutable Raw_model raw_; // reused across sweeps: no reallocation, no page faults
+  std::vector<unsigned char> owned_edges_; // per model face: internal::compute_owned_edges()
+  mutable Raw_model raw_;                  // reused across sweeps: no reallocation, no page faults
   mutable internal::Classification_statistics statistics_;
 };
 

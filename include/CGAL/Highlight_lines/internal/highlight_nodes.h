@@ -6,6 +6,7 @@
 
 #include <CGAL/Highlight_lines/internal/Local_mesh.h>
 #include <CGAL/Highlight_lines/internal/level_classification.h>
+#include <CGAL/Highlight_lines/internal/parallel.h>
 
 #include <algorithm>
 #include <array>
@@ -38,139 +39,223 @@ struct Raw_node
   std::array<double, 3> point{};
 };
 
+// An active face (see Highlight_nodes::active_faces) with what the sweep passes need of it,
+// so that they stream one array instead of gathering from the face arrays of the mesh.
+struct Active_face
+{
+  std::array<int, 3> vertices; // corners; edge j joins corners j and j + 1
+  std::array<int, 3> edges;
+  int face;
+  unsigned owned; // bit j: edge j is owned by this face; bit j + 3: its canonical direction
+                  // is from corner j + 1 to corner j (see compute_owned_edges())
+};
+
 struct Highlight_nodes
 {
-  static constexpr int no_node = -1; // an edge with no node inside
-  static constexpr int capped = -2;  // an edge with more levels inside than allowed
-
   std::vector<Raw_node> nodes;
-  // Per edge: the id of its node of lowest level, or no_node, or capped. The nodes of an
-  // edge have consecutive ids, by increasing level from first_interior_level().
+  // Model faces whose corners are not all strictly inside one level band, by increasing face:
+  // the only faces that can carry segments. All edges with nodes and all highlight edges are
+  // edges of these faces (the keys of their ends differ, or are even).
+  std::vector<Active_face> active_faces;
+  // Per edge: the id of its node of lowest level, for the edges with nodes (only those
+  // entries are written; the others are stale). The nodes of an edge have consecutive ids,
+  // by increasing level from first_interior_level(). Edge nodes are numbered by edge, in
+  // edge order; vertex nodes follow, in vertex order.
   std::vector<int> edge_first_node;
-  std::vector<int> vertex_node; // per model vertex: node id or -1
+  std::vector<int> vertex_node; // per model vertex: its node id, written for vertex nodes only
+  std::size_t number_of_edge_nodes = 0;
   std::size_t number_of_capped_edges = 0;
 };
 
-// Both ends defined, with the same side of the light plane: d is continuous on the edge.
-inline bool edge_is_usable(const Vertex_level& a, const Vertex_level& b)
-{
-  return a.defined() && b.defined() && a.normal_side == b.normal_side;
-}
-
-// The lowest level strictly inside the edge, within the window.
-inline long long first_interior_level(const Vertex_level& a, const Vertex_level& b,
+// The lowest level strictly inside an edge whose ends have bands a != b, within the window.
+inline long long first_interior_level(long long band_a, long long band_b,
                                       const Level_window& window)
 {
-  return (std::max)((std::min)(a.level, b.level) + 1, window.lowest);
-}
-
-// The id of the node of level m inside edge e (which must carry one).
-inline int node_on_edge(const Highlight_nodes& hn, int e, const Vertex_level& a,
-                        const Vertex_level& b, const Level_window& window, long long m)
-{
-  return hn.edge_first_node[std::size_t(e)] + int(m - first_interior_level(a, b, window));
+  return (std::max)(band_level((std::min)(band_a, band_b)) + 1, window.lowest);
 }
 
 // Eq. 4 (corrected): on edge (V1, V2) with d1 != d2, a node for every m with m·s strictly
 // between d1 and d2, at Q = V1 + t (V2 - V1), t = (m·s - d1) / (d2 - d1). Which levels lie
-// strictly between is read from the exact vertex classes, never from the rounded d values.
-// A compact sort key of a vertex class, so that the hot loops over edges and faces read 8
-// bytes per vertex: 2k + 1 when k·s < d < (k+1)·s, 2k when d = k·s; an odd sentinel when d
-// is undefined. Two ends with equal keys have no level strictly between them.
-inline long long level_key(const Vertex_level& l)
+// strictly between is read from the exact vertex classes (their keys), never from the rounded
+// d values. Returns the number of those levels within the window (their lowest in `first`),
+// or -1 when they are more than window.max_levels_per_edge (the edge is skipped).
+inline long long interior_levels(long long key_a, long long key_b, const Level_window& window,
+                                 long long& first)
 {
-  // The sentinel is odd: faces and edges with undefined ends take the quick rejections.
-  return l.defined() ? 2 * l.level + (l.on_level ? 0 : 1)
-                     : (std::numeric_limits<long long>::min)() + 1;
+  if (key_a == key_b || !keys_usable(key_a, key_b))
+    return 0; // the common case first: no level strictly inside
+  const long long a = key_band(key_a), b = key_band(key_b);
+  // Levels m with min(a, b) < 2m < max(a, b).
+  first = first_interior_level(a, b, window);
+  const long long last = (std::min)(band_level((std::max)(a, b) - 1), window.highest);
+  if (last < first)
+    return 0;
+  if (std::size_t(last - first + 1) > window.max_levels_per_edge)
+    return -1;
+  return last - first + 1;
 }
 
-inline void compute_level_keys(const std::vector<Vertex_level>& levels,
-                               std::vector<long long>& keys)
-{
-  keys.resize(levels.size());
-  for (std::size_t v = 0; v < levels.size(); ++v)
-    keys[v] = level_key(levels[v]);
-}
-
+// Per model face, bit j set when the face is the first, in face order, to have its edge j:
+// the face that numbered it (edges are numbered in the order faces first reach them), and
+// the one that creates the edge's nodes in a sweep; then bit j + 3 set when the canonical
+// direction of that edge (edge_vertices) is from corner j + 1 to corner j.
 template <typename TriangleMesh>
+void compute_owned_edges(const Local_mesh<TriangleMesh>& lm, std::vector<unsigned char>& owned)
+{
+  owned.assign(lm.number_of_model_faces, 0);
+  std::vector<unsigned char> seen(lm.edge_vertices.size(), 0);
+  for (std::size_t f = 0; f < lm.number_of_model_faces; ++f)
+    for (int j = 0; j < 3; ++j) {
+      const std::size_t e = std::size_t(lm.face_edges[f][std::size_t(j)]);
+      if (!seen[e]) {
+        seen[e] = 1;
+        const bool reversed = lm.edge_vertices[e][0] != lm.face_vertices[f][std::size_t(j)];
+        owned[f] = static_cast<unsigned char>(owned[f] | (1u << j) | (reversed ? 8u << j : 0u));
+      }
+    }
+}
+
+// The faces whose three corners lie strictly inside one level band (equal odd keys) carry no
+// segment and none of their edges a node; the others are gathered, in face order.
+template <typename ConcurrencyTag, typename TriangleMesh>
+void find_active_faces(const Local_mesh<TriangleMesh>& lm,
+                       const std::vector<unsigned char>& owned_edges,
+                       const std::vector<long long>& keys, std::vector<Active_face>& active)
+{
+  const Chunks chunks = chunks_for<ConcurrencyTag>(lm.number_of_model_faces, std::size_t(1) << 15);
+  std::vector<std::vector<Active_face>> parts(chunks.size() > 1 ? chunks.size() : 0);
+  active.clear();
+  for_each_chunk<ConcurrencyTag>(chunks, [&](std::size_t c, std::size_t b, std::size_t e) {
+    std::vector<Active_face>& out = parts.empty() ? active : parts[c];
+    const std::array<int, 3>* fv = lm.face_vertices.data();
+    const long long* k = keys.data();
+    for (std::size_t f = b; f < e; ++f) {
+      const long long k0 = k[fv[f][0]];
+      if (k0 == k[fv[f][1]] && k0 == k[fv[f][2]] && (k0 & 1))
+        continue;
+      out.push_back(Active_face{fv[f], lm.face_edges[f], int(f), owned_edges[f]});
+    }
+  });
+  concatenate(parts, active);
+}
+
+// Calls f(face, j, count, first) for every edge j owned by the active faces [begin, end),
+// with its interior_levels().
+template <typename F>
+void for_each_owned_edge(const std::vector<Active_face>& active, const std::vector<long long>& keys,
+                         std::size_t begin, std::size_t end, const Level_window& window, F&& f)
+{
+  for (std::size_t i = begin; i < end; ++i) {
+    const Active_face& face = active[i];
+    if ((face.owned & 7u) == 0)
+      continue;
+    for (int j = 0; j < 3; ++j) {
+      if (!(face.owned & (1u << j)))
+        continue;
+      long long first = 0;
+      const long long count = interior_levels(
+          keys[std::size_t(face.vertices[std::size_t(j)])],
+          keys[std::size_t(face.vertices[std::size_t((j + 1) % 3)])], window, first);
+      if (count != 0)
+        f(face, j, count, first);
+    }
+  }
+}
+
+// The nodes of a sweep: the active faces; the nodes of their owned edges, counted per chunk
+// of active faces, numbered (by edge) and placed; then the vertex nodes. Concurrently with a
+// parallel tag, with the same result.
+template <typename ConcurrencyTag, typename TriangleMesh>
 void compute_highlight_nodes(const Local_mesh<TriangleMesh>& lm,
-                             const std::vector<Vertex_level>& levels,
-                             const std::vector<long long>& keys, double spacing,
+                             const std::vector<unsigned char>& owned_edges,
+                             const std::vector<long long>& keys,
+                             const std::vector<double>& distances,
+                             const std::vector<int>& on_level_vertices, double spacing,
                              const Level_window& window, Highlight_nodes& out)
 {
-  const std::size_t ne = lm.edge_vertices.size();
-  out.nodes.clear();
-  out.edge_first_node.assign(ne, Highlight_nodes::no_node);
+  find_active_faces<ConcurrencyTag>(lm, owned_edges, keys, out.active_faces);
+  // Stale entries are never read: no per-sweep initialisation.
+  out.edge_first_node.resize(lm.edge_vertices.size());
+  out.vertex_node.resize(lm.number_of_model_vertices);
+
+  // 1. Count the nodes of the edges owned by the active faces, per chunk.
+  const std::vector<Active_face>& active = out.active_faces;
+  const Chunks chunks = chunks_for<ConcurrencyTag>(active.size(), std::size_t(1) << 12);
+  std::vector<std::size_t> chunk_nodes(chunks.size(), 0), chunk_capped(chunks.size(), 0);
+  for_each_chunk<ConcurrencyTag>(chunks, [&](std::size_t c, std::size_t b, std::size_t e) {
+    std::size_t nodes = 0, capped = 0;
+    for_each_owned_edge(active, keys, b, e, window,
+                        [&](const Active_face&, int, long long count, long long) {
+                          if (count < 0)
+                            ++capped;
+                          else
+                            nodes += std::size_t(count);
+                        });
+    chunk_nodes[c] = nodes;
+    chunk_capped[c] = capped;
+  });
+
+  // 2. Node ids: edge nodes by edge, then vertex nodes.
+  std::vector<std::size_t> chunk_offset(chunks.size() + 1, 0);
   out.number_of_capped_edges = 0;
-
-  std::vector<int> carrying; // edges with nodes, in order
-  int next_id = 0;
-  for (std::size_t e = 0; e < ne; ++e) {
-    const std::size_t va = std::size_t(lm.edge_vertices[e][0]),
-                      vb = std::size_t(lm.edge_vertices[e][1]);
-    if (keys[va] == keys[vb])
-      continue; // the common case first: no level strictly inside
-    const Vertex_level& a = levels[va];
-    const Vertex_level& b = levels[vb];
-    if (a.level == b.level || !edge_is_usable(a, b))
-      continue;
-    const Vertex_level& hi = a.level < b.level ? b : a;
-    // Levels strictly inside: (lo.level, hi.level], minus hi.level when hi lies on it.
-    const long long first = first_interior_level(a, b, window);
-    const long long last = (std::min)(hi.on_level ? hi.level - 1 : hi.level, window.highest);
-    if (last < first)
-      continue;
-    if (std::size_t(last - first + 1) > window.max_levels_per_edge) {
-      out.edge_first_node[e] = Highlight_nodes::capped;
-      ++out.number_of_capped_edges;
-      continue;
-    }
-    if (last - first + 1 > (std::numeric_limits<int>::max)() - next_id)
-      throw std::length_error("highlight line model: more than 2^31 nodes; restrict it with "
-                              "the level_range or face_range named parameters, or raise the "
-                              "spacing");
-    out.edge_first_node[e] = next_id;
-    next_id += int(last - first + 1);
-    carrying.push_back(int(e));
+  for (std::size_t c = 0; c < chunks.size(); ++c) {
+    chunk_offset[c + 1] = chunk_offset[c] + chunk_nodes[c];
+    out.number_of_capped_edges += chunk_capped[c];
   }
+  std::size_t vertex_nodes = 0;
+  for (int v : on_level_vertices)
+    vertex_nodes += window.contains(band_level(key_band(keys[std::size_t(v)])));
+  out.number_of_edge_nodes = chunk_offset.back();
+  if (out.number_of_edge_nodes + vertex_nodes > std::size_t((std::numeric_limits<int>::max)()))
+    throw std::length_error("highlight line model: more than 2^31 nodes; restrict it with "
+                            "the level_range or face_range named parameters, or raise the "
+                            "spacing");
+  out.nodes.resize(out.number_of_edge_nodes + vertex_nodes);
 
-  out.nodes.resize(std::size_t(next_id));
-  for (int edge : carrying) {
-    const std::size_t e = std::size_t(edge);
-    const int va = lm.edge_vertices[e][0], vb = lm.edge_vertices[e][1];
-    const Vertex_level& a = levels[std::size_t(va)];
-    const Vertex_level& b = levels[std::size_t(vb)];
-    const double da = a.distance, db = b.distance;
-    const double* pa = lm.point(va);
-    const double* pb = lm.point(vb);
-    const long long first = first_interior_level(a, b, window);
-    const Vertex_level& hi = a.level < b.level ? b : a;
-    const long long last = (std::min)(hi.on_level ? hi.level - 1 : hi.level, window.highest);
-    for (long long m = first; m <= last; ++m) {
-      Raw_node& node = out.nodes[std::size_t(out.edge_first_node[e] + int(m - first))];
-      node.edge = int(e);
-      node.level = m;
-      const double t = db != da ? (double(m) * spacing - da) / (db - da) : 0.5;
-      node.parameter = std::min(1.0, std::max(0.0, t)); // rounding must not leave the edge
-      for (int k = 0; k < 3; ++k)
-        node.point[std::size_t(k)] = pa[k] + node.parameter * (pb[k] - pa[k]);
-    }
-  }
+  // 3. Edge nodes.
+  for_each_chunk<ConcurrencyTag>(chunks, [&](std::size_t c, std::size_t b, std::size_t e) {
+    int next_id = int(chunk_offset[c]);
+    for_each_owned_edge(
+        active, keys, b, e, window,
+        [&](const Active_face& face, int j, long long count, long long first) {
+          if (count < 0)
+            return;
+          const int edge = face.edges[std::size_t(j)];
+          out.edge_first_node[std::size_t(edge)] = next_id;
+          // The canonical direction, without reading edge_vertices.
+          const bool reversed = (face.owned & (8u << j)) != 0;
+          const int va = face.vertices[std::size_t(reversed ? (j + 1) % 3 : j)],
+                    vb = face.vertices[std::size_t(reversed ? j : (j + 1) % 3)];
+          const double da = distances[std::size_t(va)], db = distances[std::size_t(vb)];
+          const double* pa = lm.point(va);
+          const double* pb = lm.point(vb);
+          for (long long m = first; m < first + count; ++m) {
+            Raw_node& node = out.nodes[std::size_t(next_id++)];
+            node.edge = edge;
+            node.vertex = -1;
+            node.level = m;
+            const double t = db != da ? (double(m) * spacing - da) / (db - da) : 0.5;
+            node.parameter = std::min(1.0, std::max(0.0, t)); // rounding must not leave the edge
+            for (int k = 0; k < 3; ++k)
+              node.point[std::size_t(k)] = pa[k] + node.parameter * (pb[k] - pa[k]);
+          }
+        });
+  });
 
-  out.vertex_node.assign(lm.number_of_model_vertices, -1);
-  for (std::size_t v = 0; v < lm.number_of_model_vertices; ++v) {
-    if (keys[v] & 1)
-      continue; // not on a level
-    const Vertex_level& l = levels[v];
-    if (!l.defined() || !l.on_level || !window.contains(l.level))
+  // 4. Vertex nodes: vertices whose d value equals m·s exactly.
+  std::size_t id = out.number_of_edge_nodes;
+  for (int v : on_level_vertices) {
+    const long long level = band_level(key_band(keys[std::size_t(v)]));
+    if (!window.contains(level))
       continue;
-    Raw_node node;
-    node.vertex = int(v);
-    node.level = l.level;
-    const double* p = lm.point(int(v));
+    Raw_node& node = out.nodes[id];
+    node.edge = -1;
+    node.vertex = v;
+    node.level = level;
+    node.parameter = 0;
+    const double* p = lm.point(v);
     node.point = {p[0], p[1], p[2]};
-    out.vertex_node[v] = int(out.nodes.size());
-    out.nodes.push_back(node);
+    out.vertex_node[std::size_t(v)] = int(id++);
   }
 }
 

@@ -6,6 +6,7 @@
 
 #include <CGAL/Highlight_lines/Light_setup.h>
 #include <CGAL/Highlight_lines/internal/Local_mesh.h>
+#include <CGAL/Highlight_lines/internal/parallel.h>
 #include <CGAL/Highlight_lines/internal/vertex_normals.h>
 
 #include <CGAL/Interval_nt.h>
@@ -14,6 +15,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -25,12 +27,19 @@ namespace internal {
 // incident to a vertex agree on it by construction.
 struct Vertex_level
 {
-  long long level = 0;         // k with k·s <= d < (k+1)·s
-  signed char normal_side = 0; // sign of Z·Ñ; 0: the normal line is parallel to S, d undefined
-  bool on_level = false;       // d == k·s exactly
-  bool out_of_range = false;   // |d/s| >= 2^50: normal almost parallel to S, levels unusable
-  bool turned_away = false;    // Z·Ñ < 0 and only the side facing the lights is wanted
-  double distance = 0;         // d in double (exactly k·s when on_level)
+  // 16 bytes (written for every vertex in every sweep): the level and the flags share a word.
+  long long level : 58;        // k with k·s <= d < (k+1)·s
+  signed char normal_side : 2; // sign of Z·Ñ; 0: the normal line is parallel to S, d undefined
+  bool on_level : 1;           // d == k·s exactly
+  bool out_of_range : 1;       // |d/s| >= 2^50: normal almost parallel to S, levels unusable
+  bool turned_away : 1;        // Z·Ñ < 0 and only the side facing the lights is wanted
+  double distance;             // d in double (exactly k·s when on_level)
+
+  Vertex_level()
+      : level(0), normal_side(0), on_level(false), out_of_range(false), turned_away(false),
+        distance(0)
+  {
+  }
 
   bool defined() const { return normal_side != 0 && !out_of_range && !turned_away; }
 
@@ -44,6 +53,10 @@ struct Vertex_level
     return on_level ? 0 : 1;
   }
 };
+
+// See level_key().
+constexpr long long key_side_offset = 1LL << 53;
+constexpr long long undefined_key = (std::numeric_limits<long long>::min)() + 1;
 
 // Statistics of the filter, for tests and benchmarks.
 struct Classification_statistics
@@ -61,18 +74,23 @@ template <typename TriangleMesh>
 class Level_classifier
 {
 private:
-  // The terms of E in double for one vertex, with their magnitudes and the depth bound.
+  // The terms of E in double for one vertex, with bounds on their rounding errors (NaN when
+  // not trusted).
   struct Terms
   {
-    double num = 0, num_magnitude = 0, den = 0, den_magnitude = 0, depth = 0;
-    bool trusted = true;
+    double num = 0, num_bound = 0, den = 0, den_bound = 0, bound_factor = 0;
   };
 
 public:
   Level_classifier(const Local_mesh<TriangleMesh>& lm, const Vertex_normals& vn,
                    const std::array<double, 3>& a, const std::array<double, 3>& h,
                    const std::array<double, 3>& z, double s)
-      : lm_(lm), vn_(vn), a_(a), h_(h), z_(z), s_(s)
+      : lm_(lm), vn_(vn), a_(a), h_(h), z_(z),
+        s_(s), habs_{std::abs(h[0]), std::abs(h[1]), std::abs(h[2])},
+        zabs_sum_(std::abs(z[0]) + std::abs(z[1]) + std::abs(z[2])),
+        inverse_s_(1 / s), habs_pair_{std::abs(h[1]) + std::abs(h[2]),
+                                      std::abs(h[0]) + std::abs(h[2]),
+                                      std::abs(h[0]) + std::abs(h[1])}
   {
   }
 
@@ -81,31 +99,101 @@ public:
   Vertex_level classify(int v, Classification_statistics& stats,
                         bool facing_side_only = false) const
   {
-    Vertex_level result;
-    const double* p = lm_.point(v);
+    Common_case c;
+    if (classify_common_case(v, facing_side_only, c))
+      return c.level();
+    return classify_in_general(v, stats, facing_side_only);
+  }
+
+  // The result of the common case (see classify_common_case()).
+  struct Common_case
+  {
+    long long k;
+    double d;
+    bool facing, turned_away;
+
+    Vertex_level level() const
+    {
+      Vertex_level result;
+      result.normal_side = facing ? 1 : -1;
+      result.turned_away = turned_away;
+      result.level = turned_away ? 0 : k;
+      result.distance = turned_away ? 0.0 : d;
+      return result;
+    }
+    long long key() const // level_key(level())
+    {
+      return turned_away ? undefined_key : 2 * k + 1 + (facing ? 0 : key_side_offset);
+    }
+  };
+
+  // The common case, without data-dependent branches (the side of the normal is random in
+  // vertex order): the side certain from the static bound, and either turned away, or
+  // k = floor(d/s) with both comparisons with k·s and (k+1)·s certain and d strictly between.
+  // Then the answer is the one of classify_in_general(), which starts with the same
+  // comparisons; otherwise returns false.
+  bool classify_common_case(int v, bool facing_side_only, Common_case& result) const
+  {
     const double* n = &vn_.normal[3 * std::size_t(v)];
-    const double* nm = &vn_.normal_magnitude[3 * std::size_t(v)];
+    const double* p = lm_.point(v);
+    const double bound_factor = vn_.bound[std::size_t(v)]; // NaN: not certain
+    const double den = z_[0] * n[0] + z_[1] * n[1] + z_[2] * n[2];
+    const double den_bound = bound_factor * zabs_sum_;
     const double w[3] = {p[0] - a_[0], p[1] - a_[1], p[2] - a_[2]};
     const double wm[3] = {std::abs(p[0]) + std::abs(a_[0]), std::abs(p[1]) + std::abs(a_[1]),
                           std::abs(p[2]) + std::abs(a_[2])};
     const double x[3] = {w[1] * h_[2] - w[2] * h_[1], w[2] * h_[0] - w[0] * h_[2],
                          w[0] * h_[1] - w[1] * h_[0]};
-    const double xm[3] = {wm[1] * std::abs(h_[2]) + wm[2] * std::abs(h_[1]),
-                          wm[2] * std::abs(h_[0]) + wm[0] * std::abs(h_[2]),
-                          wm[0] * std::abs(h_[1]) + wm[1] * std::abs(h_[0])};
+    // m(W x H) summed over its components, factored: (|h1| + |h2|) m(w0) + ...
+    const double xm = wm[0] * habs_pair_[0] + wm[1] * habs_pair_[1] + wm[2] * habs_pair_[2];
+    const double num = x[0] * n[0] + x[1] * n[1] + x[2] * n[2];
+    const double num_bound = bound_factor * xm;
+    const bool side_certain = (std::abs(den) > den_bound) & (den_bound > min_magnitude);
+    const bool facing = den > 0;
+    // Any guess of k will do (the bracket is certified); floor without a libm call.
+    const double d = num / den;
+    // The clamp maps NaN (den = 0) to guess_limit: the conversion below is always defined.
+    const double q = (std::max)(-guess_limit, (std::min)(guess_limit, d * inverse_s_));
+    long long k = static_cast<long long>(q);
+    k -= q < double(k) ? 1 : 0;
+    const double ms0 = double(k) * s_, ms1 = double(k + 1) * s_;
+    const double e0 = num - ms0 * den, e1 = num - ms1 * den;
+    const double b0 = num_bound + std::abs(ms0) * den_bound,
+                 b1 = num_bound + std::abs(ms1) * den_bound;
+    const bool bracket = (std::abs(e0) > b0) & (std::abs(e1) > b1) & (b0 > min_magnitude) &
+                         (b1 > min_magnitude) & (b0 < infinity) & (b1 < infinity) &
+                         ((e0 > 0) == facing) & ((e1 > 0) != facing) &
+                         (std::abs(d * inverse_s_) < guess_limit);
+    const bool turned_away = facing_side_only & !facing;
+    if (!(side_certain & (turned_away | bracket)))
+      return false;
+    result.k = k;
+    result.d = d;
+    result.facing = facing;
+    result.turned_away = turned_away;
+    return true;
+  }
+
+private:
+  static constexpr double guess_limit = double(1LL << 49);
+  static constexpr double infinity = std::numeric_limits<double>::infinity();
+
+  // Every case: certain signs from the static bound where it suffices, intervals and exact
+  // arithmetic otherwise.
+  Vertex_level classify_in_general(int v, Classification_statistics& stats,
+                                   bool facing_side_only) const
+  {
+    Vertex_level result;
+    const double* n = &vn_.normal[3 * std::size_t(v)];
+    // The bounds use max_k m(Ñ)_k (folded into vn_.bound with the depth) instead of the
+    // components of m(Ñ): looser by at most a factor 3, one value read per vertex.
     Terms t;
-    t.num = x[0] * n[0] + x[1] * n[1] + x[2] * n[2];
-    t.num_magnitude = xm[0] * nm[0] + xm[1] * nm[1] + xm[2] * nm[2];
+    t.bound_factor = vn_.bound[std::size_t(v)]; // NaN: take the exact path
     t.den = z_[0] * n[0] + z_[1] * n[1] + z_[2] * n[2];
-    t.den_magnitude = std::abs(z_[0]) * nm[0] + std::abs(z_[1]) * nm[1] + std::abs(z_[2]) * nm[2];
-    t.depth = double(vn_.valence[std::size_t(v)] + 16);
-    // Face cross products in the subnormal range carry absolute errors the relative bound
-    // does not cover: decide such vertices with intervals and exact arithmetic.
-    t.trusted = nm[0] + nm[1] + nm[2] > 1e-280;
+    t.den_bound = t.bound_factor * zabs_sum_;
 
     // Side of the light plane the normal points to.
-    const double den_bound = t.depth * error_per_operation * t.den_magnitude;
-    if (t.trusted && std::abs(t.den) > den_bound && den_bound > min_magnitude)
+    if (std::abs(t.den) > t.den_bound && t.den_bound > min_magnitude)
       result.normal_side = t.den > 0 ? 1 : -1;
     else {
       ++stats.static_filter_failures;
@@ -114,9 +202,20 @@ public:
         return result;
     }
     if (facing_side_only && result.normal_side < 0) {
-      result.turned_away = true;
+      result.turned_away = true; // the position is not even read
       return result;
     }
+
+    const double* p = lm_.point(v);
+    const double w[3] = {p[0] - a_[0], p[1] - a_[1], p[2] - a_[2]};
+    const double wm[3] = {std::abs(p[0]) + std::abs(a_[0]), std::abs(p[1]) + std::abs(a_[1]),
+                          std::abs(p[2]) + std::abs(a_[2])};
+    const double x[3] = {w[1] * h_[2] - w[2] * h_[1], w[2] * h_[0] - w[0] * h_[2],
+                         w[0] * h_[1] - w[1] * h_[0]};
+    const double xm = (wm[1] * habs_[2] + wm[2] * habs_[1]) +
+                      (wm[2] * habs_[0] + wm[0] * habs_[2]) + (wm[0] * habs_[1] + wm[1] * habs_[0]);
+    t.num = x[0] * n[0] + x[1] * n[1] + x[2] * n[2];
+    t.num_bound = t.bound_factor * xm;
 
     // Find k with d - k·s >= 0 > d - (k+1)·s, deciding every comparison exactly. The double
     // estimate q is almost always right (two evaluations); where it is not (the double Ñ was
@@ -189,9 +288,8 @@ private:
   {
     const double ms = double(m) * s_;
     const double e = t.num - ms * t.den;
-    const double magnitude = t.num_magnitude + std::abs(ms) * t.den_magnitude;
-    const double bound = t.depth * error_per_operation * magnitude;
-    if (t.trusted && std::abs(e) > bound && bound > min_magnitude && std::isfinite(bound))
+    const double bound = t.num_bound + std::abs(ms) * t.den_bound;
+    if (std::abs(e) > bound && bound > min_magnitude && std::isfinite(bound))
       return e > 0 ? 1 : -1;
     ++stats.static_filter_failures;
     return exact_sign(v, &m, stats);
@@ -234,7 +332,118 @@ private:
   const Vertex_normals& vn_;
   std::array<double, 3> a_, h_, z_;
   double s_;
+  std::array<double, 3> habs_;
+  double zabs_sum_;
+  double inverse_s_;
+  std::array<double, 3> habs_pair_;
 };
+
+// A compact key of a vertex class, so that the hot loops over edges and faces read 8 bytes
+// per vertex and nothing else: for a defined vertex, its band
+//   b = 2k + 1 when k·s < d < (k+1)·s,  b = 2k when d = k·s  (|b| <= 2^51 + 1),
+// plus key_side_offset when its normal points away from the light plane (Z·Ñ < 0); an odd
+// sentinel when d is undefined. Hence: equal keys have no level strictly between them; the
+// parity is that of the band (odd: strictly inside a band); two ends of an edge see the light
+// plane from the same side iff their keys lie on the same side of key_side_offset / 2.
+
+inline long long level_key(const Vertex_level& l)
+{
+  // The sentinel is odd: faces and edges with undefined ends take the quick rejections.
+  if (!l.defined())
+    return undefined_key;
+  return 2 * (long long)(l.level) + (l.on_level ? 0 : 1) +
+         (l.normal_side < 0 ? key_side_offset : 0);
+}
+
+// The band of a defined key (see level_key()).
+inline long long key_band(long long key)
+{
+  return key > key_side_offset / 2 ? key - key_side_offset : key;
+}
+
+// Whether d is continuous along an edge whose ends have these keys: both defined, with the
+// same side of the light plane.
+inline bool keys_usable(long long a, long long b)
+{
+  return a != undefined_key && b != undefined_key &&
+         (a > key_side_offset / 2) == (b > key_side_offset / 2);
+}
+
+// The level k of a band: floor(b / 2).
+inline long long band_level(long long band)
+{
+  return band >> 1;
+}
+
+// Sign of d - m·s for a vertex of band b.
+inline int compare_band_to_level(long long band, long long m)
+{
+  return band > 2 * m ? 1 : (band < 2 * m ? -1 : 0);
+}
+
+// What a sweep's classification pass gathers besides the classes.
+struct Classification_summary
+{
+  std::size_t undefined = 0;    // Z·Ñ = 0
+  std::size_t out_of_range = 0; // |d/s| >= 2^50
+  std::vector<int> on_level;    // defined vertices with d = k·s exactly, increasing
+};
+
+// Classifies the vertices [0, nv) in one pass: their keys, d values (the distance of
+// Vertex_level) and, if `levels` is not null, their classes; concurrently over blocks of
+// vertices with a parallel tag, with the same result.
+template <typename ConcurrencyTag, typename TriangleMesh>
+void classify_vertices(const Level_classifier<TriangleMesh>& classifier, std::size_t nv,
+                       bool facing_side_only, std::vector<Vertex_level>* levels,
+                       std::vector<long long>& keys, std::vector<double>& distances,
+                       Classification_summary& summary, Classification_statistics& stats)
+{
+  if (levels != nullptr)
+    levels->resize(nv);
+  keys.resize(nv);
+  distances.resize(nv);
+  const Chunks chunks = chunks_for<ConcurrencyTag>(nv, std::size_t(1) << 14);
+  struct Part
+  {
+    Classification_statistics stats;
+    std::size_t undefined = 0, out_of_range = 0;
+    std::vector<int> on_level;
+  };
+  std::vector<Part> parts(chunks.size());
+  for_each_chunk<ConcurrencyTag>(chunks, [&](std::size_t c, std::size_t b, std::size_t e) {
+    Part& part = parts[c];
+    for (std::size_t v = b; v < e; ++v) {
+      typename Level_classifier<TriangleMesh>::Common_case common;
+      if (classifier.classify_common_case(int(v), facing_side_only, common)) {
+        // Strictly inside a band, or turned away: no vertex node, defined or not counted.
+        if (levels != nullptr)
+          (*levels)[v] = common.level();
+        keys[v] = common.key();
+        distances[v] = common.turned_away ? 0.0 : common.d;
+        continue;
+      }
+      const Vertex_level l = classifier.classify(int(v), part.stats, facing_side_only);
+      if (levels != nullptr)
+        (*levels)[v] = l;
+      const long long key = level_key(l);
+      keys[v] = key;
+      distances[v] = l.distance;
+      if (!(key & 1))
+        part.on_level.push_back(int(v)); // even keys: defined, on a level
+      part.undefined += l.normal_side == 0;
+      part.out_of_range += l.out_of_range;
+    }
+  });
+  summary.undefined = summary.out_of_range = 0;
+  summary.on_level.clear();
+  for (Part& part : parts) {
+    stats.static_filter_failures += part.stats.static_filter_failures;
+    stats.interval_filter_failures += part.stats.interval_filter_failures;
+    summary.undefined += part.undefined;
+    summary.out_of_range += part.out_of_range;
+    summary.on_level.insert(summary.on_level.end(), part.on_level.begin(), part.on_level.end());
+  }
+}
 
 } // namespace internal
 } // namespace Highlight_lines

@@ -7,6 +7,7 @@
 #include <CGAL/Highlight_lines/internal/Local_mesh.h>
 #include <CGAL/Highlight_lines/internal/highlight_nodes.h>
 #include <CGAL/Highlight_lines/internal/level_classification.h>
+#include <CGAL/Highlight_lines/internal/parallel.h>
 
 #include <CGAL/assertions.h>
 
@@ -27,76 +28,112 @@ struct Highlight_segments
 
 // §2.4 and Fig. 2: inside each triangle, nodes of the same index on different edges are
 // joined; an edge whose two ends lie exactly on one level (a highlight edge) is a segment
-// itself, emitted once per edge. Per triangle and level this is the zero set of the linear
-// interpolant of d - m·s, decided from the exact vertex classes only: segments of different
-// levels cannot cross, and a segment is found by both faces of its nodes' edges.
-template <typename TriangleMesh>
-void connect_highlight_nodes(const Local_mesh<TriangleMesh>& lm,
-                             const std::vector<Vertex_level>& levels,
-                             const std::vector<long long>& keys, const Highlight_nodes& hn,
-                             const Level_window& window, Highlight_segments& out)
+// itself, emitted once per edge (by the face owning it). Per triangle and level this is the
+// zero set of the linear interpolant of d - m·s, decided from the exact vertex classes (their
+// keys) only: segments of different levels cannot cross, and a segment is found by both
+// faces of its nodes' edges. Only the active faces of `hn` can carry segments. The segments
+// inside faces come first, by face, then the highlight edges, by edge; with a parallel tag,
+// chunks of active faces are processed concurrently and their segments merged in that order.
+template <typename ConcurrencyTag, typename TriangleMesh>
+void connect_highlight_nodes(const Local_mesh<TriangleMesh>& lm, const std::vector<long long>& keys,
+                             const Highlight_nodes& hn, const Level_window& window,
+                             Highlight_segments& out)
 {
-  out.segments.clear();
+  typedef std::vector<std::array<int, 2>> Segments;
+  struct Part
+  {
+    Segments in_faces, highlight_edges;
+    std::size_t faces_across_poles = 0, faces_with_capped_edges = 0;
+  };
+  const std::vector<Active_face>& active = hn.active_faces;
+  const Chunks chunks = chunks_for<ConcurrencyTag>(active.size(), std::size_t(1) << 12);
+  std::vector<Part> parts(chunks.size());
+  const bool single = chunks.size() == 1;
+  if (single)
+    std::swap(parts[0].in_faces, out.segments); // reuse the buffer of the previous sweep
+
+  for_each_chunk<ConcurrencyTag>(chunks, [&](std::size_t c, std::size_t b, std::size_t e) {
+    Part& part = parts[c];
+    part.in_faces.clear();
+    for (std::size_t i = b; i < e; ++i) {
+      const Active_face& face = active[i];
+      const long long k[3] = {keys[std::size_t(face.vertices[0])],
+                              keys[std::size_t(face.vertices[1])],
+                              keys[std::size_t(face.vertices[2])]};
+
+      // Highlight edges owned by this face: both ends on one level (equal, even keys).
+      for (int j = 0; j < 3; ++j) {
+        const long long ka = k[j];
+        if (!(face.owned & (1u << j)) || ka != k[(j + 1) % 3] || (ka & 1))
+          continue;
+        // Equal even keys are defined, on the same side and on the same level.
+        if (window.contains(band_level(key_band(ka)))) {
+          // In the canonical direction of the edge, as an edge pass would emit it.
+          const std::array<int, 2>& ends =
+              lm.edge_vertices[std::size_t(face.edges[std::size_t(j)])];
+          part.highlight_edges.push_back(
+              {hn.vertex_node[std::size_t(ends[0])], hn.vertex_node[std::size_t(ends[1])]});
+        }
+      }
+
+      if (!keys_usable(k[0], k[1]) || !keys_usable(k[1], k[2])) {
+        ++part.faces_across_poles;
+        continue;
+      }
+      long long first = 0;
+      if (interior_levels(k[0], k[1], window, first) < 0 ||
+          interior_levels(k[1], k[2], window, first) < 0 ||
+          interior_levels(k[2], k[0], window, first) < 0) {
+        ++part.faces_with_capped_edges;
+        continue;
+      }
+      const long long band[3] = {key_band(k[0]), key_band(k[1]), key_band(k[2])};
+      const long long lowest =
+          (std::max)(band_level(std::min({band[0], band[1], band[2]})), window.lowest);
+      const long long highest =
+          (std::min)(band_level(std::max({band[0], band[1], band[2]})), window.highest);
+      // Face edge j joins corners j and j + 1.
+      auto node_on_face_edge = [&](int j, long long m) {
+        return hn.edge_first_node[std::size_t(face.edges[std::size_t(j)])] +
+               int(m - first_interior_level(band[j], band[(j + 1) % 3], window));
+      };
+      for (long long m = lowest; m <= highest; ++m) {
+        const int r[3] = {compare_band_to_level(band[0], m), compare_band_to_level(band[1], m),
+                          compare_band_to_level(band[2], m)};
+        const int on = (r[0] == 0) + (r[1] == 0) + (r[2] == 0);
+        if (on == 0) {
+          if (r[0] == r[1] && r[1] == r[2])
+            continue;
+          // The lone corner i is on one side, the other two on the other side.
+          const int i = r[0] == r[1] ? 2 : (r[0] == r[2] ? 1 : 0);
+          part.in_faces.push_back({node_on_face_edge((i + 2) % 3, m), node_on_face_edge(i, m)});
+        } else if (on == 1) {
+          const int i = r[0] == 0 ? 0 : (r[1] == 0 ? 1 : 2);
+          if (r[(i + 1) % 3] * r[(i + 2) % 3] >= 0)
+            continue; // the level only touches the triangle at corner i
+          const int corner = face.vertices[std::size_t(i)];
+          CGAL_assertion(hn.vertex_node[std::size_t(corner)] >= 0);
+          part.in_faces.push_back(
+              {hn.vertex_node[std::size_t(corner)], node_on_face_edge((i + 1) % 3, m)});
+        }
+        // on >= 2: highlight edges, above.
+      }
+    }
+  });
+
   out.faces_across_poles = 0;
   out.faces_with_capped_edges = 0;
-
-  for (std::size_t f = 0; f < lm.number_of_model_faces; ++f) {
-    const std::array<int, 3>& fv = lm.face_vertices[f];
-    const long long k0 = keys[std::size_t(fv[0])];
-    if (k0 == keys[std::size_t(fv[1])] && k0 == keys[std::size_t(fv[2])] && (k0 & 1))
-      continue; // the common case first: the three corners strictly inside one level band
-    const std::array<int, 3>& fe = lm.face_edges[f];
-    const Vertex_level* l[3] = {&levels[std::size_t(fv[0])], &levels[std::size_t(fv[1])],
-                                &levels[std::size_t(fv[2])]};
-    if (!edge_is_usable(*l[0], *l[1]) || !edge_is_usable(*l[1], *l[2])) {
-      ++out.faces_across_poles;
-      continue;
-    }
-    if (hn.edge_first_node[std::size_t(fe[0])] == Highlight_nodes::capped ||
-        hn.edge_first_node[std::size_t(fe[1])] == Highlight_nodes::capped ||
-        hn.edge_first_node[std::size_t(fe[2])] == Highlight_nodes::capped) {
-      ++out.faces_with_capped_edges;
-      continue;
-    }
-    const long long lowest =
-        (std::max)(std::min({l[0]->level, l[1]->level, l[2]->level}), window.lowest);
-    const long long highest =
-        (std::min)(std::max({l[0]->level, l[1]->level, l[2]->level}), window.highest);
-    // Face edge j joins corners j and j + 1.
-    auto node_on_face_edge = [&](int j, long long m) {
-      return node_on_edge(hn, fe[std::size_t(j)], *l[j], *l[(j + 1) % 3], window, m);
-    };
-    for (long long m = lowest; m <= highest; ++m) {
-      const int r[3] = {l[0]->compare_to_level(m), l[1]->compare_to_level(m),
-                        l[2]->compare_to_level(m)};
-      const int on = (r[0] == 0) + (r[1] == 0) + (r[2] == 0);
-      if (on == 0) {
-        if (r[0] == r[1] && r[1] == r[2])
-          continue;
-        // The lone corner i is on one side, the other two on the other side.
-        const int i = r[0] == r[1] ? 2 : (r[0] == r[2] ? 1 : 0);
-        out.segments.push_back({node_on_face_edge((i + 2) % 3, m), node_on_face_edge(i, m)});
-      } else if (on == 1) {
-        const int i = r[0] == 0 ? 0 : (r[1] == 0 ? 1 : 2);
-        if (r[(i + 1) % 3] * r[(i + 2) % 3] >= 0)
-          continue; // the level only touches the triangle at corner i
-        CGAL_assertion(hn.vertex_node[std::size_t(fv[std::size_t(i)])] >= 0);
-        out.segments.push_back(
-            {hn.vertex_node[std::size_t(fv[std::size_t(i)])], node_on_face_edge((i + 1) % 3, m)});
-      }
-      // on >= 2: highlight edges, below.
-    }
-  }
-
-  for (std::size_t e = 0; e < lm.edge_vertices.size(); ++e) {
-    const int a = lm.edge_vertices[e][0], b = lm.edge_vertices[e][1];
-    if (keys[std::size_t(a)] != keys[std::size_t(b)] || (keys[std::size_t(a)] & 1))
-      continue; // a highlight edge has both ends on one level: equal, even keys
-    const Vertex_level& la = levels[std::size_t(a)];
-    const Vertex_level& lb = levels[std::size_t(b)];
-    if (edge_is_usable(la, lb) && la.on_level && lb.on_level && la.level == lb.level &&
-        window.contains(la.level))
-      out.segments.push_back({hn.vertex_node[std::size_t(a)], hn.vertex_node[std::size_t(b)]});
+  if (single)
+    std::swap(parts[0].in_faces, out.segments);
+  else
+    out.segments.clear();
+  for (std::size_t c = single ? 1 : 0; c < parts.size(); ++c)
+    out.segments.insert(out.segments.end(), parts[c].in_faces.begin(), parts[c].in_faces.end());
+  for (const Part& part : parts) {
+    out.segments.insert(out.segments.end(), part.highlight_edges.begin(),
+                        part.highlight_edges.end());
+    out.faces_across_poles += part.faces_across_poles;
+    out.faces_with_capped_edges += part.faces_with_capped_edges;
   }
 }
 

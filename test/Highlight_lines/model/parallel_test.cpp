@@ -1,0 +1,224 @@
+// CGAL::Parallel_tag gives bit for bit the sequential model: same nodes (positions, levels,
+// carriers, parameters, degrees), same lines in the same canonical order, same counts; on
+// real meshes of the shared data set, on a refined one (many chunks per pass), with vertices
+// exactly on levels (vertex nodes, highlight edges), capped edges and face ranges, across
+// sweeps of one sweeper, and after update_positions(). Errors name the same element.
+// The identity tests need TBB (CGAL_LINKED_WITH_TBB); without it only the fallback of
+// Parallel_if_available_tag is checked.
+#include "test_meshes.h"
+
+#include <CGAL/Highlight_lines/Highlight_line_sweeper.h>
+#include <CGAL/Highlight_lines/default_light_setup.h>
+#include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
+#include <CGAL/compute_highlight_lines.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace test;
+namespace HL = CGAL::Highlight_lines;
+
+template <typename Model>
+void expect_identical(const Model& a, const Model& b, const std::string& what)
+{
+  ASSERT_EQ(a.nodes().size(), b.nodes().size()) << what;
+  ASSERT_EQ(a.lines().size(), b.lines().size()) << what;
+  EXPECT_EQ(a.number_of_segments(), b.number_of_segments()) << what;
+  EXPECT_EQ(a.number_of_skipped_edges(), b.number_of_skipped_edges()) << what;
+  EXPECT_EQ(a.number_of_undefined_vertices(), b.number_of_undefined_vertices()) << what;
+  EXPECT_EQ(a.number_of_out_of_range_vertices(), b.number_of_out_of_range_vertices()) << what;
+  auto same_bits = [](double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; };
+  for (std::size_t i = 0; i < a.nodes().size(); ++i) {
+    const auto& p = a.nodes()[i];
+    const auto& q = b.nodes()[i];
+    ASSERT_TRUE(same_bits(p.point.x(), q.point.x()) && same_bits(p.point.y(), q.point.y()) &&
+                same_bits(p.point.z(), q.point.z()))
+        << what << ": node " << i << " at " << p.point << " vs " << q.point;
+    ASSERT_EQ(p.level, q.level) << what << ": node " << i;
+    ASSERT_EQ(p.halfedge, q.halfedge) << what << ": node " << i;
+    ASSERT_EQ(p.vertex, q.vertex) << what << ": node " << i;
+    ASSERT_TRUE(same_bits(p.parameter, q.parameter)) << what << ": node " << i;
+    ASSERT_EQ(p.degree, q.degree) << what << ": node " << i;
+  }
+  for (std::size_t i = 0; i < a.lines().size(); ++i) {
+    ASSERT_EQ(a.lines()[i].level, b.lines()[i].level) << what << ": line " << i;
+    ASSERT_EQ(a.lines()[i].is_closed, b.lines()[i].is_closed) << what << ": line " << i;
+    ASSERT_EQ(a.lines()[i].nodes, b.lines()[i].nodes) << what << ": line " << i;
+  }
+}
+
+// compute_highlight_lines() with both tags, polylines included.
+template <typename Tag, typename NamedParameters>
+void expect_tag_agrees(const Surface_mesh& mesh, const Lights& lights, const NamedParameters& np,
+                       const std::string& what)
+{
+  std::vector<std::vector<Point>> serial_lines, parallel_lines;
+  const auto serial =
+      CGAL::compute_highlight_lines(mesh, lights, std::back_inserter(serial_lines), np);
+  const auto parallel =
+      CGAL::compute_highlight_lines<Tag>(mesh, lights, std::back_inserter(parallel_lines), np);
+  ASSERT_GT(serial.nodes().size(), 0u) << what;
+  expect_identical(serial, parallel, what);
+  EXPECT_EQ(serial_lines, parallel_lines) << what;
+}
+
+Surface_mesh shared_mesh(const std::string& name, int subdivisions = 0)
+{
+  Surface_mesh mesh;
+  if (!CGAL::IO::read_polygon_mesh(shared_data(name), mesh))
+    ADD_FAILURE() << "cannot read " << shared_data(name);
+  if (subdivisions > 0)
+    CGAL::Subdivision_method_3::Loop_subdivision(
+        mesh, CGAL::parameters::number_of_iterations(subdivisions));
+  return mesh;
+}
+
+// A flat grid (d = x exactly: vertices on levels, highlight edges along y) with a smooth bump
+// in one corner; about 2 x 300^2 faces, so that every pass has many chunks.
+Surface_mesh flat_grid_with_bump()
+{
+  return to_mesh<Surface_mesh>(grid(300, 0.125, -18.75, -18.75, [](double x, double y) {
+    const double r2 = (x - 8) * (x - 8) + (y - 8) * (y - 8);
+    return r2 < 36 ? 0.5 * std::pow(1 - r2 / 36, 3) : 0.0;
+  }));
+}
+const Lights flat_grid_lights(Point(0, 0, 1), Vector(0, 1, 0), Vector(0, 0, 1), 0.25);
+
+TEST(Parallel, IfAvailableTagAgreesWithSequential)
+{
+  // With TBB this is Parallel_tag, without it the sequential fallback: the same model.
+  const Surface_mesh mesh = shared_mesh("spot.off");
+  const Lights lights = HL::default_light_setup(mesh);
+  expect_tag_agrees<CGAL::Parallel_if_available_tag>(mesh, lights,
+                                                     CGAL::parameters::default_values(), "spot");
+}
+
+#ifdef CGAL_LINKED_WITH_TBB
+
+TEST(Parallel, SharedMeshesAreBitIdentical)
+{
+  for (const std::string name : {"beetle.off", "bunny.off", "fandisk.off", "rocker-arm.off"}) {
+    const Surface_mesh mesh = shared_mesh(name);
+    const Lights lights = HL::default_light_setup(mesh);
+    expect_tag_agrees<CGAL::Parallel_tag>(mesh, lights, CGAL::parameters::default_values(),
+                                          name + " (all levels)");
+    expect_tag_agrees<CGAL::Parallel_tag>(
+        mesh, lights,
+        HL::parameters::combine(HL::parameters::facing_side_only(true),
+                                HL::parameters::level_range(HL::default_level_range(mesh, lights))),
+        name + " (light tunnel)");
+    expect_tag_agrees<CGAL::Parallel_tag>(mesh, lights, HL::parameters::max_levels_per_edge(2),
+                                          name + " (capped edges)");
+  }
+}
+
+TEST(Parallel, RefinedMeshIsBitIdentical)
+{
+  // The beetle Loop-subdivided twice: 38,656 x 16 faces, dozens of chunks per pass.
+  const Surface_mesh mesh = shared_mesh("beetle.off", 2);
+  const Lights lights = HL::default_light_setup(mesh);
+  expect_tag_agrees<CGAL::Parallel_tag>(mesh, lights, CGAL::parameters::default_values(),
+                                        "refined beetle");
+  expect_tag_agrees<CGAL::Parallel_tag>(mesh, lights, HL::parameters::facing_side_only(true),
+                                        "refined beetle, facing side");
+  // A face range: every other block of faces.
+  std::vector<Surface_mesh::Face_index> range;
+  for (auto f : faces(mesh))
+    if ((std::size_t(f) / 5000) % 2 == 0)
+      range.push_back(f);
+  expect_tag_agrees<CGAL::Parallel_tag>(mesh, lights, HL::parameters::face_range(range),
+                                        "refined beetle, face range");
+}
+
+TEST(Parallel, VerticesOnLevelsAreBitIdentical)
+{
+  const Surface_mesh mesh = flat_grid_with_bump();
+  const auto serial =
+      CGAL::compute_highlight_lines(mesh, flat_grid_lights, CGAL::Emptyset_iterator());
+  std::size_t vertex_nodes = 0;
+  for (const auto& node : serial.nodes())
+    vertex_nodes += node.is_on_vertex();
+  ASSERT_GT(vertex_nodes, 1000u); // the flat part: highlight edges
+  expect_tag_agrees<CGAL::Parallel_tag>(mesh, flat_grid_lights, CGAL::parameters::default_values(),
+                                        "grid");
+  expect_tag_agrees<CGAL::Parallel_tag>(mesh, flat_grid_lights,
+                                        HL::parameters::level_range(std::make_pair(-20, 40)),
+                                        "grid, level range");
+}
+
+TEST(Parallel, SweepsAndPositionUpdatesAreBitIdentical)
+{
+  Surface_mesh mesh = shared_mesh("beetle.off", 1);
+  typedef HL::Highlight_line_sweeper<Surface_mesh> Serial;
+  typedef HL::Highlight_line_sweeper<Surface_mesh, CGAL::Default, CGAL::Default, CGAL::Parallel_tag>
+      Parallel;
+  static_assert(std::is_same<Serial::Model, Parallel::Model>::value, "one model type");
+  Serial serial(mesh);
+  Parallel parallel(mesh);
+  EXPECT_EQ(serial.vertex_normals().normal, parallel.vertex_normals().normal);
+  const Lights lights = HL::default_light_setup(mesh);
+  // Buffers are reused across sweeps: the lights move by fractions of the spacing.
+  for (int step = 0; step < 6; ++step) {
+    const Lights moved =
+        lights.translated(lights.index_direction() * (lights.spacing() * 0.3 * step));
+    const auto np = HL::parameters::facing_side_only(step % 2 == 0);
+    expect_identical(serial.compute(moved, np), parallel.compute(moved, np),
+                     "sweep " + std::to_string(step));
+  }
+  // Move every vertex a little along z, re-read the positions.
+  for (auto v : vertices(mesh))
+    mesh.point(v) = mesh.point(v) + Vector(0, 0, 0.001 * std::sin(100 * mesh.point(v).x()));
+  serial.update_positions();
+  parallel.update_positions();
+  EXPECT_EQ(serial.vertex_normals().normal, parallel.vertex_normals().normal);
+  expect_identical(serial.compute(lights), parallel.compute(lights), "after update_positions");
+  expect_identical(Serial(mesh).compute(lights), parallel.compute(lights), "fresh sweeper");
+}
+
+TEST(Parallel, ErrorsNameTheSameElement)
+{
+  // Two degenerate faces far apart in face order: both report the first one.
+  Surface_mesh mesh = shared_mesh("beetle.off", 2);
+  std::vector<Surface_mesh::Face_index> all(faces(mesh).begin(), faces(mesh).end());
+  for (std::size_t i : {all.size() - 1000, std::size_t(5000)}) {
+    const auto h = halfedge(all[i], mesh);
+    const Point a = mesh.point(source(h, mesh)), b = mesh.point(target(h, mesh));
+    mesh.point(target(next(h, mesh), mesh)) = CGAL::midpoint(a, b);
+  }
+  auto problem_of = [&](auto compute) -> std::string {
+    try {
+      compute();
+    } catch (const HL::Invalid_input& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  const Lights lights = HL::default_light_setup(shared_mesh("beetle.off"));
+  const std::string serial =
+      problem_of([&] { CGAL::compute_highlight_lines(mesh, lights, CGAL::Emptyset_iterator()); });
+  const std::string parallel = problem_of([&] {
+    CGAL::compute_highlight_lines<CGAL::Parallel_tag>(mesh, lights, CGAL::Emptyset_iterator());
+  });
+  EXPECT_NE(serial.find("degenerate"), std::string::npos) << serial;
+  EXPECT_EQ(serial, parallel);
+
+  // Non-finite coordinates met by update_positions(): the first vertex is named.
+  Surface_mesh moving = shared_mesh("beetle.off", 2);
+  HL::Highlight_line_sweeper<Surface_mesh> s(moving);
+  HL::Highlight_line_sweeper<Surface_mesh, CGAL::Default, CGAL::Default, CGAL::Parallel_tag> p(
+      moving);
+  std::vector<Surface_mesh::Vertex_index> vs(vertices(moving).begin(), vertices(moving).end());
+  for (std::size_t i : {vs.size() - 10, std::size_t(3000)})
+    moving.point(vs[i]) = Point(std::nan(""), 0, 0);
+  EXPECT_EQ(problem_of([&] { s.update_positions(); }), problem_of([&] { p.update_positions(); }));
+}
+
+#endif // CGAL_LINKED_WITH_TBB
+
+} // namespace
