@@ -94,26 +94,33 @@ every part of the surface is crossed by highlight lines of several directions. O
 line model is computed per setup, with the vertex normals computed once.
 
 <b>The measure.</b> Each highlight line is resampled at a uniform arc-length step
-`h = w/4`, with `w = detection_scale · ē` (`ē` the mean edge length). At a sample `p(s)`,
-the discrete curvature vector at scale `w` is `k_w(s) = (p(s+w) - 2p(s) + p(s-w)) / w²`.
-On a smooth line the curvature at scale `w` and at scale `3w` agree up to the variation of the
-curvature, while a defect of size about `w` bends the line at the fine scale much more than at
-the coarse one. The bending measure
-\f[ b(s) = w \, \| k_w(s) - k_{3w}(s) \| \f]
-(an angle, in radians) is therefore a band-pass filter of the line's curvature: it is small
-along smoothly curved lines and large where the curvature changes abruptly. Each sample is
+`h = w/4`, with `w = detection_scale · ē` (`ē` the mean edge length). At a sample `p(s)`, let
+`D = p(s+3w/2) - 3p(s+w/2) + 3p(s-w/2) - p(s-3w/2)` (the change of the discrete curvature
+vector over one step `w`, times `w²`) and `T` the unit chord `p(s+w/2) - p(s-w/2)`. The bending
+\f[ b(s) = \| D - (D \cdot T)\,T \| / w \approx w^2 \| \kappa' N + \kappa \tau B \| \f]
+(an angle, in radians) drops the tangential part `-κ²T` of `p'''`, which only says that the
+curvature vector turns with the tangent: `b` vanishes on straight lines and circles, is small
+along smoothly curved lines, and is large where the curvature changes abruptly. Each sample is
 compared with the line's own robust statistics, the median `med` and the normalised median
 absolute deviation `σ = 1.4826 MAD` of `b` along that line (for lines with fewer than 32
 samples, and as a floor of a quarter of them, those of all lines of the same light setup): a
-sample is an anomaly if its score `(b - med)/σ` exceeds `detection_threshold` and `b` exceeds
-`minimum_bending`. Samples closer than `3w` to the end of an open line are not scored.
+sample is an anomaly if it is the largest `b` within `w` along its line, its score
+`(b - med)/σ` exceeds `detection_threshold` and `b` exceeds `minimum_bending`. Samples closer
+than `3w/2` to the end of an open line, and samples where the surface normal makes more than
+`maximum_incidence_angle` with the light plane's normal (near the silhouette, `d` grows without
+bound and lines crowd beyond what the triangulation resolves), are not scored.
 
 <b>The regions.</b> Each anomaly is attached to the mesh vertex nearest to it. Anomalies less
-than `detection_scale` edges apart form a cluster; clusters seen on fewer than
-`minimum_evidence` distinct highlight lines (over all light setups) are discarded as noise.
-Each remaining cluster grows by `region_margin` rings of edges, clusters that meet merge, and
-the region is the set of faces with a vertex in the grown cluster. Regions are disjoint and
-written by decreasing score.
+than `detection_scale` edges apart form a cluster; clusters seen in fewer than a fraction
+`minimum_evidence` of the light setups are discarded as noise (a defect bends the lines of
+every direction; triangulation noise rarely lines up across setups). Each remaining cluster
+grows by `region_margin` rings of edges, clusters that meet merge, and the region is the set
+of faces with a vertex in the grown cluster. Regions are disjoint and written by decreasing
+score.
+
+A defect is only seen where several lines cross it: the lights' spacing and
+`number_of_offsets` set how small a defect can be found. Design features where the lines kink
+on purpose (creases, panel joints) are reported too; restrict the search with `face_range`.
 
 The measure and the regions are invariant under rigid motions and uniform scalings of the mesh
 and the lights together, and independent of the mesh's face order.
@@ -154,8 +161,9 @@ and the lights together, and independent of the mesh's face order.
       \cgalParamDefault{0.01}
     \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::minimum_evidence}
-      \cgalParamDescription{the number of distinct highlight lines a region must be seen on}
-      \cgalParamDefault{2}
+      \cgalParamDescription{the fraction of the light setups of the sweep in which a region
+        must show anomalies, in (0, 1]}
+      \cgalParamDefault{0.5}
     \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::region_margin}
       \cgalParamDescription{rings of edges added around the anomalies; the fairing needs the
@@ -165,10 +173,17 @@ and the lights together, and independent of the mesh's face order.
     \cgalParamNBegin{Highlight_lines::parameters::face_range}
       \cgalParamDescription{search these faces only}
       \cgalParamDefault{all faces}
+    \cgalParamNEnd
+    \cgalParamNBegin{Highlight_lines::parameters::maximum_incidence_angle}
+      \cgalParamDescription{the largest angle (degrees, in (0, 90]) between a vertex normal and
+        the light plane's normal at which the lines are scored}
+      \cgalParamDefault{60}
+    \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::max_levels_per_edge,
                      Highlight_lines::parameters::facing_side_only}
       \cgalParamDescription{as for `compute_highlight_lines()`, for every light setup of the
         sweep (`level_range` is ignored: the setups are rotated)}
+      \cgalParamDefault{256 and `true`}
     \cgalParamNEnd
     \cgalParamNBegin{vertex_point_map, vertex_index_map, face_index_map, halfedge_index_map}
       \cgalParamDescription{as for `compute_highlight_lines()`}
