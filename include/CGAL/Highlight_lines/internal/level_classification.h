@@ -160,12 +160,15 @@ public:
     const double e0 = num - ms0 * den, e1 = num - ms1 * den;
     const double b0 = num_bound + std::abs(ms0) * den_bound,
                  b1 = num_bound + std::abs(ms1) * den_bound;
-    const bool bracket = (std::abs(e0) > b0) & (std::abs(e1) > b1) & (b0 > min_magnitude) &
-                         (b1 > min_magnitude) & (b0 < infinity) & (b1 < infinity) &
-                         ((e0 > 0) == facing) & ((e1 > 0) != facing) &
-                         (std::abs(d * inverse_s_) < guess_limit);
-    const bool turned_away = facing_side_only & !facing;
-    if (!(side_certain & (turned_away | bracket)))
+    // Bitwise on 0/1 integers: all tests are evaluated, without branches.
+    auto bit = [](bool b) { return unsigned(b); };
+    const unsigned bracket = bit(std::abs(e0) > b0) & bit(std::abs(e1) > b1) &
+                             bit(b0 > min_magnitude) & bit(b1 > min_magnitude) &
+                             bit(b0 < infinity) & bit(b1 < infinity) &
+                             bit((e0 > 0) == facing) & bit((e1 > 0) != facing) &
+                             bit(std::abs(d * inverse_s_) < guess_limit);
+    const unsigned turned_away = bit(facing_side_only) & bit(!facing);
+    if (!(bit(side_certain) & (turned_away | bracket)))
       return false;
     result.k = k;
     result.d = d;
