@@ -415,6 +415,29 @@ TEST(DetectAndFair, RepairsEveryDefectFoundAndTouchesNothingElse)
     }
 }
 
+TEST(DetectAndFair, SurfaceMeshAndPolyhedronAgree)
+{
+  test::Soup soup = test::grid(50, 2.0 / 50, -1, -1, hood, 0.3, 6);
+  HB::Mesh mesh = test::to_mesh<HB::Mesh>(soup);
+  ASSERT_EQ(HB::inject_defects(mesh, 1, 4.0, 0.5, 6, [](auto) { return true; }).size(), 1u);
+  for (auto v : vertices(mesh))
+    soup.points[std::size_t(v)] = mesh.point(v);
+  test::Polyhedron polyhedron = test::to_mesh<test::Polyhedron>(soup);
+  const auto lights = HL::default_light_setup(mesh, HLP::number_of_lines(30));
+  const auto a = CGAL::detect_and_fair_highlight_line_irregularities(mesh, lights);
+  const auto b = CGAL::detect_and_fair_highlight_line_irregularities(polyhedron, lights);
+  ASSERT_EQ(a.size(), 1u);
+  ASSERT_EQ(b.size(), a.size());
+  EXPECT_TRUE(a[0].repaired && b[0].repaired);
+  EXPECT_EQ(a[0].report.iterations, b[0].report.iterations);
+  // Polyhedron_3 enumerates vertices in insertion order, as the soup gave them.
+  std::size_t i = 0;
+  for (auto v : vertices(polyhedron))
+    EXPECT_LT(
+        CGAL::squared_distance(v->point(), mesh.point(HB::vertex_descriptor(std::uint32_t(i++)))),
+        1e-20);
+}
+
 TEST(DetectAndFair, RecordsRegionsThatCannotBeFairedAndGoesOn)
 {
   HB::Mesh mesh = smooth_hood(4, 40);

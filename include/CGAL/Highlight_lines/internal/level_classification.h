@@ -164,9 +164,8 @@ public:
     auto bit = [](bool b) { return unsigned(b); };
     const unsigned bracket = bit(std::abs(e0) > b0) & bit(std::abs(e1) > b1) &
                              bit(b0 > min_magnitude) & bit(b1 > min_magnitude) &
-                             bit(b0 < infinity) & bit(b1 < infinity) &
-                             bit((e0 > 0) == facing) & bit((e1 > 0) != facing) &
-                             bit(std::abs(d * inverse_s_) < guess_limit);
+                             bit(b0 < infinity) & bit(b1 < infinity) & bit((e0 > 0) == facing) &
+                             bit((e1 > 0) != facing) & bit(std::abs(d * inverse_s_) < guess_limit);
     const unsigned turned_away = bit(facing_side_only) & bit(!facing);
     if (!(bit(side_certain) & (turned_away | bracket)))
       return false;
