@@ -18,6 +18,7 @@
 
 #include "command_line.h"
 #include "highlight_picture.h"
+#include "mesh_picture.h"
 #include "region_overview.h"
 
 #include <chrono>
@@ -142,14 +143,7 @@ Options parse(int argc, char** argv)
   return o;
 }
 
-pic::Point3 to_array(const K::Point_3& p)
-{
-  return {p.x(), p.y(), p.z()};
-}
-pic::Vector3 to_array(const K::Vector_3& v)
-{
-  return {v.x(), v.y(), v.z()};
-}
+using mesh_picture::to_array;
 
 // A close-up of the region: the mesh shaded (region tinted), its highlight lines, and
 // optionally other curves (the desired lines) in colour.
@@ -158,19 +152,13 @@ pic::Image picture(const Mesh& mesh, const std::vector<face_descriptor>& region,
                    const std::vector<std::vector<K::Point_3>>& extra, const Options& o)
 {
   std::vector<pic::Point3> points;
-  for (auto v : vertices(mesh))
-    points.push_back(to_array(mesh.point(v)));
   std::vector<std::array<std::size_t, 3>> triangles;
+  mesh_picture::mesh_arrays(mesh, points, triangles);
   std::vector<std::optional<pic::RGB>> colors;
   std::vector<bool> in_region(num_faces(mesh), false);
   for (face_descriptor f : region)
     in_region[std::size_t(f)] = true;
   for (auto f : faces(mesh)) {
-    std::array<std::size_t, 3> t{};
-    std::size_t j = 0;
-    for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
-      t[j++] = std::size_t(v);
-    triangles.push_back(t);
     colors.push_back(in_region[std::size_t(f)] ? std::optional<pic::RGB>(pic::mix(
                                                      pic::colors::paint, pic::colors::region, 0.45))
                                                : std::nullopt);
@@ -193,20 +181,9 @@ pic::Image picture(const Mesh& mesh, const std::vector<face_descriptor>& region,
   CGAL::compute_highlight_lines(
       mesh, lights, std::back_inserter(lines),
       HLP::combine(HLP::level_range(levels), HLP::facing_side_only(true)));
-  std::vector<std::vector<pic::Point3>> polylines;
-  for (const auto& l : lines) {
-    polylines.emplace_back();
-    for (const auto& p : l)
-      polylines.back().push_back(to_array(p));
-  }
-  renderer.draw_polylines(polylines);
+  renderer.draw_polylines(mesh_picture::polyline_arrays(lines));
   if (!extra.empty()) {
-    std::vector<std::vector<pic::Point3>> curves;
-    for (const auto& l : extra) {
-      curves.emplace_back();
-      for (const auto& p : l)
-        curves.back().push_back(to_array(p));
-    }
+    const auto curves = mesh_picture::polyline_arrays(extra);
     pic::Line_style blue;
     blue.color = pic::colors::blue;
     blue.width = 2.2;

@@ -14,6 +14,7 @@
 
 #include "command_line.h"
 #include "highlight_picture.h"
+#include "mesh_picture.h"
 
 #include <algorithm>
 #include <array>
@@ -117,14 +118,7 @@ Options parse(int argc, char** argv)
   return o;
 }
 
-highlight_picture::Point3 to_array(const K::Point_3& p)
-{
-  return {p.x(), p.y(), p.z()};
-}
-highlight_picture::Vector3 to_array(const K::Vector_3& v)
-{
-  return {v.x(), v.y(), v.z()};
-}
+using mesh_picture::to_array;
 
 } // namespace
 
@@ -186,15 +180,7 @@ int main(int argc, char** argv)
     // The picture: the mesh seen from above the light plane's side, lines drawn over it.
     std::vector<highlight_picture::Point3> points;
     std::vector<std::array<std::size_t, 3>> triangles;
-    for (auto v : vertices(mesh))
-      points.push_back(to_array(mesh.point(v)));
-    for (auto f : faces(mesh)) {
-      std::array<std::size_t, 3> t{};
-      std::size_t j = 0;
-      for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
-        t[j++] = std::size_t(v);
-      triangles.push_back(t);
-    }
+    mesh_picture::mesh_arrays(mesh, points, triangles);
     // Azimuth around the light plane normal Z, measured from the light direction H.
     const auto z = to_array(lights.plane_normal()), h = to_array(lights.light_direction());
     const auto w = highlight_picture::detail::cross(z, h);
@@ -206,13 +192,7 @@ int main(int argc, char** argv)
         highlight_picture::fit_camera(points, view, z, options.width, options.height);
     highlight_picture::Renderer renderer(options.width, options.height, camera);
     renderer.draw_mesh(points, triangles);
-    std::vector<std::vector<highlight_picture::Point3>> lines;
-    for (const auto& polyline : polylines) {
-      lines.emplace_back();
-      for (const auto& p : polyline)
-        lines.back().push_back(to_array(p));
-    }
-    renderer.draw_polylines(lines);
+    renderer.draw_polylines(mesh_picture::polyline_arrays(polylines));
     const std::string picture_path = options.out + ".png";
     if (!highlight_picture::write_png(picture_path, renderer.image())) {
       std::cerr << "highlight_lines: cannot write " << picture_path << "\n";

@@ -10,6 +10,7 @@
 #include <CGAL/compute_highlight_lines.h>
 
 #include "highlight_picture.h"
+#include "mesh_picture.h"
 
 #include <array>
 #include <optional>
@@ -26,25 +27,17 @@ picture(const CGAL::Surface_mesh<Point>& mesh,
 {
   namespace pic = highlight_picture;
   namespace HLP = CGAL::Highlight_lines::parameters;
-  auto to_array = [](const Point& p) { return pic::Point3{p.x(), p.y(), p.z()}; };
+  using mesh_picture::to_array;
   std::vector<pic::Point3> points;
-  for (auto v : vertices(mesh))
-    points.push_back(to_array(mesh.point(v)));
   std::vector<std::array<std::size_t, 3>> triangles;
-  for (auto f : faces(mesh)) {
-    std::array<std::size_t, 3> t{};
-    std::size_t j = 0;
-    for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
-      t[j++] = std::size_t(v);
-    triangles.push_back(t);
-  }
+  mesh_picture::mesh_arrays(mesh, points, triangles);
   std::vector<std::optional<pic::RGB>> colors(num_faces(mesh));
   for (std::size_t i = regions.size(); i-- > 0;)
     for (auto f : regions[i])
       colors[std::size_t(f)] =
           pic::mix(pic::colors::paint, i == 0 ? pic::colors::red : pic::colors::orange, 0.6);
-  const auto z = to_array(CGAL::ORIGIN + lights.plane_normal());
-  const auto h = to_array(CGAL::ORIGIN + lights.light_direction());
+  const auto z = to_array(lights.plane_normal());
+  const auto h = to_array(lights.light_direction());
   const pic::Vector3 view{-(0.5 * h[0] + z[0]), -(0.5 * h[1] + z[1]), -(0.5 * h[2] + z[2])};
   pic::Renderer renderer(width, height, pic::fit_camera(points, view, z, width, height));
   renderer.draw_mesh(points, triangles, pic::Surface_style{}, colors);
@@ -53,13 +46,7 @@ picture(const CGAL::Surface_mesh<Point>& mesh,
       mesh, lights, std::back_inserter(lines),
       HLP::combine(HLP::level_range(CGAL::Highlight_lines::default_level_range(mesh, lights)),
                    HLP::facing_side_only(true)));
-  std::vector<std::vector<pic::Point3>> polylines;
-  for (const auto& l : lines) {
-    polylines.emplace_back();
-    for (const auto& p : l)
-      polylines.back().push_back(to_array(p));
-  }
-  renderer.draw_polylines(polylines);
+  renderer.draw_polylines(mesh_picture::polyline_arrays(lines));
   return renderer.image();
 }
 
