@@ -21,6 +21,8 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/OFF.h>
 
+#include "../Highlight_lines/flipped_faces.h"
+
 #include <CGAL/Highlight_lines/Fairing_report.h>
 #include <CGAL/Highlight_lines/Invalid_input.h>
 #include <CGAL/Highlight_lines/default_light_setup.h>
@@ -275,13 +277,7 @@ void check_fairing(Mesh& mesh, const HL::Light_setup<K>& lights, const Parameter
     return;
   const std::vector<Face> region = region_around(mesh, centre, 1 + int(p.rings % 3));
   const std::vector<double> before = coordinates(mesh);
-  std::map<Face, Vector> normal_before;
-  for (Face f : mesh.faces()) {
-    const Mesh::Halfedge_index h = mesh.halfedge(f);
-    normal_before[f] =
-        CGAL::cross_product(mesh.point(mesh.target(h)) - mesh.point(mesh.source(h)),
-                            mesh.point(mesh.target(mesh.next(h))) - mesh.point(mesh.source(h)));
-  }
+  const Mesh input = mesh;
   try {
     CGAL::fair_with_highlight_lines(mesh, region, lights,
                                     CGAL::parameters::number_of_iterations(1 + p.iterations % 3));
@@ -308,14 +304,8 @@ void check_fairing(Mesh& mesh, const HL::Light_setup<K>& lights, const Parameter
         std::memcmp(&before[3 * std::size_t(v)], &after[3 * std::size_t(v)], 3 * sizeof(double)))
       bug("a vertex that is not movable moved");
   }
-  for (Face f : mesh.faces()) {
-    const Mesh::Halfedge_index h = mesh.halfedge(f);
-    const Vector n =
-        CGAL::cross_product(mesh.point(mesh.target(h)) - mesh.point(mesh.source(h)),
-                            mesh.point(mesh.target(mesh.next(h))) - mesh.point(mesh.source(h)));
-    if (n != normal_before[f] && !(n * normal_before[f] > 0))
-      bug("a triangle flipped");
-  }
+  if (!test::flipped_faces(input, mesh).empty())
+    bug("a triangle flipped");
 }
 
 } // namespace

@@ -2,6 +2,8 @@
 #ifndef HIGHLIGHT_LINES_TEST_MESHES_H
 #define HIGHLIGHT_LINES_TEST_MESHES_H
 
+#include "../flipped_faces.h"
+
 #include <CGAL/Highlight_lines/Light_setup.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

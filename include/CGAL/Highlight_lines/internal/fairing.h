@@ -424,7 +424,7 @@ private:
   {
     const Node_jacobian J = jacobian(directions);
     const auto& lm = sweeper_.local_mesh();
-    std::map<std::pair<int, int>, double> P;
+    difference_trace_ = 0;
     for (const Matched_piece& piece : pieces)
       for (std::size_t i = 0; i < piece.targets.size(); ++i) {
         const Raw_node& node = model_.node(std::size_t(piece.nodes[i + 1]));
@@ -445,19 +445,18 @@ private:
         const Vec3 r{q[0] - piece.targets[i][0], q[1] - piece.targets[i][1],
                      q[2] - piece.targets[i][2]};
         const double l = piece.weights[i];
+        // The solver's set_P() adds: one call per pair and node, duplicates summed there.
         for (const auto& a : row) {
           solver_.set_q(std::size_t(a.first), 2 * w * l * dot3(a.second, r));
           for (const auto& b : row)
-            if (a.first <= b.first)
-              P[{a.first, b.first}] += 2 * w * l * dot3(a.second, b.second);
+            if (a.first <= b.first) {
+              const double value = 2 * w * l * dot3(a.second, b.second);
+              solver_.set_P(std::size_t(a.first), std::size_t(b.first), value);
+              if (a.first == b.first)
+                difference_trace_ += value;
+            }
         }
       }
-    difference_trace_ = 0;
-    for (const auto& entry : P) {
-      solver_.set_P(std::size_t(entry.first.first), std::size_t(entry.first.second), entry.second);
-      if (entry.first.first == entry.first.second)
-        difference_trace_ += entry.second;
-    }
     return difference_value(pieces);
   }
 
@@ -480,24 +479,34 @@ private:
   }
 
   // Moves the movable vertices by x_i N_i, halving the step while a triangle would flip or
-  // degenerate, with respect to the start of the step and to the input mesh: steps that each
-  // turn a triangle by less than 90 degrees can add up to a flip. Returns the scale applied.
+  // degenerate. Flips are judged against the input mesh, not the start of the step: steps that
+  // each turn a triangle by less than 90 degrees can add up to a flip. A triangle folded in the
+  // input (its normal opposed to the sum of its corners' unit vertex normals) may unfold; it
+  // must only stay non-degenerate. Returns the scale applied.
   double move_without_flips(const std::vector<double>& x, const std::vector<Vec3>& directions,
                             Fairing_report& report)
   {
     const auto& lm = sweeper_.local_mesh();
-    std::vector<int> faces;
-    for (int v : region_.movable)
-      for (int i = region_.vertex_face_begin[std::size_t(v)];
-           i < region_.vertex_face_begin[std::size_t(v) + 1]; ++i)
-        faces.push_back(region_.vertex_faces[std::size_t(i)]);
-    std::sort(faces.begin(), faces.end());
-    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
-    std::vector<Vec3> before;
-    for (int f : faces)
-      before.push_back(face_cross(f));
-    if (input_face_cross_.empty()) // the first step: the mesh is still the input
-      input_face_cross_ = before;
+    if (step_faces_.empty()) { // the first step: the mesh and its normals are still the input's
+      for (int v : region_.movable)
+        for (int i = region_.vertex_face_begin[std::size_t(v)];
+             i < region_.vertex_face_begin[std::size_t(v) + 1]; ++i)
+          step_faces_.push_back(region_.vertex_faces[std::size_t(i)]);
+      std::sort(step_faces_.begin(), step_faces_.end());
+      step_faces_.erase(std::unique(step_faces_.begin(), step_faces_.end()), step_faces_.end());
+      for (int f : step_faces_) {
+        const Vec3 n = face_cross(f);
+        Vec3 corner_normals{0, 0, 0};
+        for (int c : lm.face_vertices[std::size_t(f)]) {
+          const Vec3 m = sweeper_.vertex_normals().unit_normal(c);
+          for (int k = 0; k < 3; ++k)
+            corner_normals[std::size_t(k)] += m[std::size_t(k)];
+        }
+        // Zero for a folded triangle: then any non-degenerate orientation is accepted.
+        input_face_cross_.push_back(dot3(n, corner_normals) > 0 ? n : Vec3{0, 0, 0});
+      }
+    }
+    const std::vector<int>& faces = step_faces_;
     std::vector<Vec3> start(region_.movable.size());
     for (std::size_t i = 0; i < region_.movable.size(); ++i)
       start[i] = position(region_.movable[i]);
@@ -519,7 +528,8 @@ private:
         const Vec3& p2 = moved[std::size_t(c[2])];
         const Vec3 n = cross3({p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]},
                               {p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]});
-        ok = dot3(n, before[j]) > 0 && dot3(n, input_face_cross_[j]) > 0;
+        const Vec3& reference = input_face_cross_[j];
+        ok = reference == Vec3{0, 0, 0} ? dot3(n, n) > 0 : dot3(n, reference) > 0;
       }
       if (!ok)
         continue;
@@ -545,7 +555,8 @@ private:
   std::vector<Desired_line> desired_;
   std::vector<std::pair<vertex_descriptor, Point>> checkpoint_;
   std::vector<double> previous_solution_;
-  std::vector<Vec3> input_face_cross_; // of the faces around movable vertices, before any step
+  std::vector<int> step_faces_;        // the faces around movable vertices
+  std::vector<Vec3> input_face_cross_; // their input cross products, zero where folded
   double difference_trace_ = 0;        // trace of the q_diff part of the last program
   double mean_edge_length_ = 1, length_scale_ = 1;
 };
