@@ -243,6 +243,40 @@ TEST(WillmoreEnergy, QuadraticEqualsDirectEvaluationWithFrozenWeights)
   }
 }
 
+// The fairing's assembly straight into the solver's sink gives the same Q, c and r as the
+// least-squares form with its sparse products.
+TEST(WillmoreEnergy, DirectAssemblyEqualsTheLeastSquaresForm)
+{
+  std::mt19937 rng(7);
+  const Problem p = bumpy_problem(rng);
+  const Frozen_willmore_weights frozen =
+      freeze_willmore_weights(p.mesh.positions, p.mesh.triangles, p.energy_vertices);
+  const Willmore_quadratic q =
+      willmore_quadratic(frozen, p.mesh.positions, p.movable, p.directions);
+  std::vector<int> variable_of_vertex(p.mesh.positions.size(), -1);
+  for (std::size_t v = 0; v < p.movable.size(); ++v)
+    variable_of_vertex[std::size_t(p.movable[v])] = int(v);
+  const Eigen::Index n = Eigen::Index(p.movable.size());
+  Eigen::MatrixXd Q = Eigen::MatrixXd::Zero(n, n);
+  Eigen::VectorXd c = Eigen::VectorXd::Zero(n);
+  std::size_t lower_calls = 0;
+  const double r = add_willmore_quadratic(
+      frozen, p.mesh.positions, variable_of_vertex, p.directions,
+      [&](int a, int b, double value) {
+        lower_calls += a > b;
+        Q(a, b) += value;
+        if (a != b)
+          Q(b, a) += value;
+      },
+      [&](int a, double value) { c[a] += value; });
+  EXPECT_EQ(lower_calls, 0u);
+  EXPECT_NEAR(r, q.r, 1e-12 * q.r);
+  const Eigen::MatrixXd expected = Eigen::MatrixXd(q.Q);
+  EXPECT_LT((Q - expected).lpNorm<Eigen::Infinity>(), 1e-12 * expected.lpNorm<Eigen::Infinity>());
+  EXPECT_LT((c - q.c).lpNorm<Eigen::Infinity>(), 1e-12 * (1 + q.c.lpNorm<Eigen::Infinity>()));
+  EXPECT_GT(expected.lpNorm<Eigen::Infinity>(), 0);
+}
+
 TEST(WillmoreEnergy, GradientMatchesCentralDifferences)
 {
   std::mt19937 rng(3);

@@ -125,28 +125,21 @@ public:
       solver_.resize(n);
       const std::vector<Vec3> directions = movable_normals();
 
-      // q_fair: the Willmore energy with frozen weights, an exact quadratic in x.
-      const Willmore_quadratic fair = willmore_quadratic(directions);
-      // q_diff: Gauss–Newton form over the matched line pieces.
-      std::vector<Matched_piece> pieces = match_desired_lines();
-      step.lines_targeted = pieces.size();
       const double w1 = options_.fairness_weight;
       const double w2 =
           options_.difference_weight / (length_scale_ * length_scale_ * length_scale_);
-      add_matrix(fair.Q, w1);
-      for (std::size_t i = 0; i < n; ++i)
-        solver_.set_q(i, w1 * fair.c[Eigen::Index(i)]);
-      solver_.set_r(w1 * fair.r);
-      step.fairness_energy = fair.r;
+      // q_fair: the Willmore energy with frozen weights, an exact quadratic in x.
+      double trace = 0;
+      step.fairness_energy = add_fairness_terms(directions, w1, trace);
+      solver_.set_r(w1 * step.fairness_energy);
+      // q_diff: Gauss–Newton form over the matched line pieces.
+      std::vector<Matched_piece> pieces = match_desired_lines();
+      step.lines_targeted = pieces.size();
       step.difference_energy = add_difference_terms(pieces, directions, w2);
       // Q is positive semidefinite in exact arithmetic but can be singular (e.g. on regular
       // grids); rounding then leaves tiny negative pivots. A relative 1e-10 on the diagonal makes
       // the program strictly convex and changes the solution negligibly.
-      double trace = difference_trace_;
-      for (int k = 0; k < fair.Q.outerSize(); ++k)
-        for (Eigen::SparseMatrix<double>::InnerIterator it(fair.Q, k); it; ++it)
-          if (it.row() == it.col())
-            trace += w1 * it.value();
+      trace += difference_trace_;
       const double regularization = 1e-10 * trace / double((std::max)(n, std::size_t(1)));
       if (regularization > 0 && std::isfinite(regularization))
         for (std::size_t i = 0; i < n; ++i)
@@ -207,7 +200,8 @@ public:
     if (report.status != Fairing_report::Status::ITERATION_LIMIT) {
       Fairing_report::Iteration last;
       const std::vector<Vec3> directions = movable_normals();
-      last.fairness_energy = willmore_quadratic(directions).r;
+      last.fairness_energy = willmore_energy(local_points(), sweeper_.local_mesh().face_vertices,
+                                             region_.energy_vertices);
       std::vector<Matched_piece> pieces = match_desired_lines();
       last.lines_targeted = pieces.size();
       last.difference_energy = difference_value(pieces);
@@ -460,22 +454,28 @@ private:
     return difference_value(pieces);
   }
 
-  void add_matrix(const Eigen::SparseMatrix<double>& Q, double w)
+  std::vector<Vec3> local_points() const
   {
-    for (int k = 0; k < Q.outerSize(); ++k)
-      for (Eigen::SparseMatrix<double>::InnerIterator it(Q, k); it; ++it)
-        if (it.row() <= it.col())
-          solver_.set_P(std::size_t(it.row()), std::size_t(it.col()), w * it.value());
-  }
-
-  Willmore_quadratic willmore_quadratic(const std::vector<Vec3>& directions) const
-  {
-    const auto& lm = sweeper_.local_mesh();
-    std::vector<Vec3> points(lm.vertex_handles.size());
+    std::vector<Vec3> points(sweeper_.local_mesh().vertex_handles.size());
     for (std::size_t v = 0; v < points.size(); ++v)
       points[v] = position(int(v));
-    return make_willmore_quadratic(points, lm.face_vertices, region_.energy_vertices,
-                                   region_.movable, directions);
+    return points;
+  }
+
+  // Adds w · q_fair to the solver and the trace of its matrix to `trace`; returns q_fair at 0.
+  double add_fairness_terms(const std::vector<Vec3>& directions, double w, double& trace)
+  {
+    const std::vector<Vec3> points = local_points();
+    const Frozen_willmore_weights frozen = freeze_willmore_weights(
+        points, sweeper_.local_mesh().face_vertices, region_.energy_vertices);
+    return add_willmore_quadratic(
+        frozen, points, region_.variable, directions,
+        [&](int a, int b, double value) {
+          solver_.set_P(std::size_t(a), std::size_t(b), w * value);
+          if (a == b)
+            trace += w * value;
+        },
+        [&](int a, double value) { solver_.set_q(std::size_t(a), w * value); });
   }
 
   // Moves the movable vertices by x_i N_i, halving the step while a triangle would flip or

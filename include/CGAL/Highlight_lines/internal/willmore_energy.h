@@ -239,6 +239,47 @@ inline Willmore_quadratic willmore_quadratic(const Frozen_willmore_weights& froz
   return quadratic;
 }
 
+// The same quadratic handed straight to a sink, without the sparse products of
+// willmore_quadratic(): row i of J holds a_iv = sqrt(A_i) ∂K_i/∂x_v (a 3-vector per variable v
+// of the ring), so Q_vw = 2 Σ_i a_iv · a_iw and c_v = 2 Σ_i a_iv · sqrt(A_i) K_i. Calls
+// add_P(v, w, value) with v <= w once per energy vertex and pair (a sink that sums the
+// duplicates gets Q), add_q(v, value) likewise; returns r = E(0). `variable_of_vertex` maps
+// a vertex to its variable, -1 if it does not move.
+template <typename AddP, typename AddQ>
+double add_willmore_quadratic(const Frozen_willmore_weights& frozen,
+                              const std::vector<std::array<double, 3>>& positions,
+                              const std::vector<int>& variable_of_vertex,
+                              const std::vector<std::array<double, 3>>& directions, AddP add_P,
+                              AddQ add_q)
+{
+  using namespace willmore_detail;
+  double r = 0;
+  std::vector<std::pair<int, Vec3>> row;
+  for (std::size_t i = 0; i < frozen.energy_vertices.size(); ++i) {
+    const double root_area = std::sqrt(frozen.area[i]);
+    const Vec3 k = root_area * mean_curvature_normal(frozen, i, positions);
+    r += dot(k, k);
+    row.clear();
+    double own = 0;
+    for (const auto& neighbour : frozen.neighbours[i]) {
+      own += neighbour.weight;
+      const int v = variable_of_vertex[std::size_t(neighbour.vertex)];
+      if (v >= 0)
+        row.emplace_back(v, (-root_area * neighbour.weight) * directions[std::size_t(v)]);
+    }
+    const int self = variable_of_vertex[std::size_t(frozen.energy_vertices[i])];
+    if (self >= 0)
+      row.emplace_back(self, (root_area * own) * directions[std::size_t(self)]);
+    for (const auto& a : row) {
+      add_q(a.first, 2 * dot(a.second, k));
+      for (const auto& b : row)
+        if (a.first <= b.first)
+          add_P(a.first, b.first, 2 * dot(a.second, b.second));
+    }
+  }
+  return r;
+}
+
 // Freeze and build in one call: the quadratic of the energy around `energy_vertices` at the
 // current `positions`.
 inline Willmore_quadratic make_willmore_quadratic(
