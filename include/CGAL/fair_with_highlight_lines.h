@@ -6,6 +6,7 @@
 
 #include <CGAL/Highlight_lines/Active_set_box_QP_solver.h>
 #include <CGAL/Highlight_lines/Fairing_report.h>
+#include <CGAL/Highlight_lines/Fairness_energy.h>
 #include <CGAL/Highlight_lines/Invalid_input.h>
 #include <CGAL/Highlight_lines/Light_setup.h>
 #include <CGAL/Highlight_lines/parameters.h>
@@ -105,8 +106,9 @@ after the iteration bound.
   get no target.
 - *q_fair* is the discrete Willmore energy of the region with the standard cotangent formula
   `K = 1/(2A) Σ (cot α + cot β)(V_i − V_j)` (eq. 8 as printed lacks the factor 1/2), weights
-  held fixed during an iteration. *q_diff* is eq. 10–14 in Gauss–Newton form, divided by
-  `area(R)^{3/2}` so that the result commutes with uniform scaling of mesh and lights.
+  held fixed during an iteration (or its normal part, `fairness_energy`). *q_diff* is eq. 10–14 in
+Gauss–Newton form, divided by `area(R)^{3/2}` so that the result commutes with uniform scaling of
+mesh and lights.
 
 \tparam TriangleMesh a model of `MutableFaceGraph` whose faces are triangles
 \tparam FaceRange a range of `face_descriptor`
@@ -125,6 +127,10 @@ the vertex points} \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`} \cgal
 \cgalParamDescription{ω1} \cgalParamDefault{1} \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::difference_weight} \cgalParamDescription{ω2}
 \cgalParamDefault{1} \cgalParamNEnd
+    \cgalParamNBegin{Highlight_lines::parameters::fairness_energy} \cgalParamDescription{the
+fairness term, a `Highlight_lines::Fairness_energy`: the Willmore energy of the paper, or its
+normal part (the squared mean curvature), which slivers and folded triangles do not dominate}
+\cgalParamDefault{`Highlight_lines::Fairness_energy::WILLMORE`} \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::convergence_threshold} \cgalParamDescription{ε of
 eq. 17} \cgalParamDefault{0.001} \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::qp_solver} \cgalParamDescription{a model of
@@ -178,6 +184,8 @@ fair_with_highlight_lines(TriangleMesh& tm, const FaceRange& region,
       choose_parameter(get_parameter(np, HL::internal_np::fairness_weight), 1.0);
   options.difference_weight =
       choose_parameter(get_parameter(np, HL::internal_np::difference_weight), 1.0);
+  options.fairness_energy = choose_parameter(get_parameter(np, HL::internal_np::fairness_energy),
+                                             HL::Fairness_energy::WILLMORE);
   options.convergence_threshold =
       choose_parameter(get_parameter(np, HL::internal_np::convergence_threshold), 0.001);
   const auto iterations =

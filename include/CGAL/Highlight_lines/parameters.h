@@ -19,6 +19,7 @@ enum max_levels_per_edge_t { max_levels_per_edge };
 enum number_of_lines_t { number_of_lines };
 enum facing_side_only_t { facing_side_only };
 enum fairness_weight_t { fairness_weight };
+enum fairness_energy_t { fairness_energy };
 enum difference_weight_t { difference_weight };
 enum convergence_threshold_t { convergence_threshold };
 enum qp_solver_t { qp_solver };
@@ -84,6 +85,7 @@ CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(max_levels_per_edge_t, max_levels_per_edge)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(number_of_lines_t, number_of_lines)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(facing_side_only_t, facing_side_only)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(fairness_weight_t, fairness_weight)
+CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(fairness_energy_t, fairness_energy)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(difference_weight_t, difference_weight)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(convergence_threshold_t, convergence_threshold)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(qp_solver_t, qp_solver)

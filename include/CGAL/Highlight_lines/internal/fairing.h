@@ -5,6 +5,7 @@
 #define CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_H
 
 #include <CGAL/Highlight_lines/Fairing_report.h>
+#include <CGAL/Highlight_lines/Fairness_energy.h>
 #include <CGAL/Highlight_lines/Highlight_line_sweeper.h>
 #include <CGAL/Highlight_lines/Invalid_input.h>
 #include <CGAL/Highlight_lines/Light_setup.h>
@@ -48,6 +49,7 @@ constexpr double tangent_reach_in_edges = 3;
 struct Fairing_options
 {
   double fairness_weight = 1, difference_weight = 1, convergence_threshold = 0.001;
+  Fairness_energy fairness_energy = Fairness_energy::WILLMORE;
   std::size_t max_iterations = 50;
   int neighborhood_rings = 3;
   Level_window window;
@@ -200,8 +202,7 @@ public:
     if (report.status != Fairing_report::Status::ITERATION_LIMIT) {
       Fairing_report::Iteration last;
       const std::vector<Vec3> directions = movable_normals();
-      last.fairness_energy = willmore_energy(local_points(), sweeper_.local_mesh().face_vertices,
-                                             region_.energy_vertices);
+      last.fairness_energy = fairness_value();
       std::vector<Matched_piece> pieces = match_desired_lines();
       last.lines_targeted = pieces.size();
       last.difference_energy = difference_value(pieces);
@@ -462,6 +463,26 @@ private:
     return points;
   }
 
+  // The unit normals of the energy vertices, for Fairness_energy::MEAN_CURVATURE.
+  const std::vector<Vec3>& energy_normals()
+  {
+    energy_normals_.clear();
+    for (int v : region_.energy_vertices)
+      energy_normals_.push_back(sweeper_.vertex_normals().unit_normal(v));
+    return energy_normals_;
+  }
+
+  // q_fair of the current mesh.
+  double fairness_value()
+  {
+    const std::vector<Vec3> points = local_points();
+    return add_willmore_quadratic(
+        freeze_willmore_weights(points, sweeper_.local_mesh().face_vertices,
+                                region_.energy_vertices),
+        points, region_.variable, movable_normals(), [](int, int, double) {}, [](int, double) {},
+        options_.fairness_energy == Fairness_energy::MEAN_CURVATURE ? &energy_normals() : nullptr);
+  }
+
   // Adds w · q_fair to the solver and the trace of its matrix to `trace`; returns q_fair at 0.
   double add_fairness_terms(const std::vector<Vec3>& directions, double w, double& trace)
   {
@@ -475,7 +496,8 @@ private:
           if (a == b)
             trace += w * value;
         },
-        [&](int a, double value) { solver_.set_q(std::size_t(a), w * value); });
+        [&](int a, double value) { solver_.set_q(std::size_t(a), w * value); },
+        options_.fairness_energy == Fairness_energy::MEAN_CURVATURE ? &energy_normals() : nullptr);
   }
 
   // Moves the movable vertices by x_i N_i, halving the step while a triangle would flip or
@@ -555,6 +577,7 @@ private:
   std::vector<Desired_line> desired_;
   std::vector<std::pair<vertex_descriptor, Point>> checkpoint_;
   std::vector<double> previous_solution_;
+  std::vector<Vec3> energy_normals_;
   std::vector<int> step_faces_;        // the faces around movable vertices
   std::vector<Vec3> input_face_cross_; // their input cross products, zero where folded
   double difference_trace_ = 0;        // trace of the q_diff part of the last program

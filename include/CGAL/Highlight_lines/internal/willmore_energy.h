@@ -245,19 +245,30 @@ inline Willmore_quadratic willmore_quadratic(const Frozen_willmore_weights& froz
 // add_P(v, w, value) with v <= w once per energy vertex and pair (a sink that sums the
 // duplicates gets Q), add_q(v, value) likewise; returns r = E(0). `variable_of_vertex` maps
 // a vertex to its variable, -1 if it does not move.
+//
+// With `energy_normals` (a unit normal N_i per energy vertex), K_i is replaced by its normal part
+// (K_i · N_i) N_i: the energy Σ A_i (K_i · N_i)² of the mean curvature alone.
 template <typename AddP, typename AddQ>
 double add_willmore_quadratic(const Frozen_willmore_weights& frozen,
                               const std::vector<std::array<double, 3>>& positions,
                               const std::vector<int>& variable_of_vertex,
                               const std::vector<std::array<double, 3>>& directions, AddP add_P,
-                              AddQ add_q)
+                              AddQ add_q,
+                              const std::vector<std::array<double, 3>>* energy_normals = nullptr)
 {
   using namespace willmore_detail;
   double r = 0;
   std::vector<std::pair<int, Vec3>> row;
+  // The normal part of a vector of the row: still a 3-vector, along N_i.
+  auto part = [energy_normals](std::size_t i, const Vec3& a) {
+    if (energy_normals == nullptr)
+      return a;
+    const Vec3& n = (*energy_normals)[i];
+    return dot(a, n) * n;
+  };
   for (std::size_t i = 0; i < frozen.energy_vertices.size(); ++i) {
     const double root_area = std::sqrt(frozen.area[i]);
-    const Vec3 k = root_area * mean_curvature_normal(frozen, i, positions);
+    const Vec3 k = part(i, root_area * mean_curvature_normal(frozen, i, positions));
     r += dot(k, k);
     row.clear();
     double own = 0;
@@ -265,11 +276,11 @@ double add_willmore_quadratic(const Frozen_willmore_weights& frozen,
       own += neighbour.weight;
       const int v = variable_of_vertex[std::size_t(neighbour.vertex)];
       if (v >= 0)
-        row.emplace_back(v, (-root_area * neighbour.weight) * directions[std::size_t(v)]);
+        row.emplace_back(v, part(i, (-root_area * neighbour.weight) * directions[std::size_t(v)]));
     }
     const int self = variable_of_vertex[std::size_t(frozen.energy_vertices[i])];
     if (self >= 0)
-      row.emplace_back(self, (root_area * own) * directions[std::size_t(self)]);
+      row.emplace_back(self, part(i, (root_area * own) * directions[std::size_t(self)]));
     for (const auto& a : row) {
       add_q(a.first, 2 * dot(a.second, k));
       for (const auto& b : row)

@@ -1,0 +1,32 @@
+// Copyright (c) 2026 The Highlight_lines package authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_HIGHLIGHT_LINES_FAIRNESS_ENERGY_H
+#define CGAL_HIGHLIGHT_LINES_FAIRNESS_ENERGY_H
+
+namespace CGAL {
+namespace Highlight_lines {
+
+/*!
+\ingroup PkgHighlightLinesRef
+
+The fairness term \f$ q_{\mathrm{fair}} \f$ of `CGAL::fair_with_highlight_lines()`, chosen with
+the named parameter `Highlight_lines::parameters::fairness_energy`. Both use the cotangent
+mean curvature normal \f$ K_i = \frac{1}{2A_i} \sum_j (\cot\alpha_{ij} + \cot\beta_{ij})
+(V_i - V_j) \f$ with the weights and areas frozen in each iteration.
+*/
+enum class Fairness_energy {
+  /// \f$ \sum_i A_i \|K_i\|^2 \f$, the discrete Willmore energy of the paper (eq. 6–8). The
+  /// default.
+  WILLMORE,
+  /// \f$ \sum_i A_i (K_i \cdot N_i)^2 \f$, its normal part (the squared mean curvature). Equal
+  /// to `WILLMORE` on well-shaped triangles; on slivers and folded triangles the tangential
+  /// part of \f$ K_i \f$ (a discretisation artefact, large where cotangents are) dominates the
+  /// Willmore energy, and displacements along the normals that cancel it bend the surface.
+  MEAN_CURVATURE
+};
+
+} // namespace Highlight_lines
+} // namespace CGAL
+
+#endif // CGAL_HIGHLIGHT_LINES_FAIRNESS_ENERGY_H
