@@ -243,6 +243,38 @@ TEST(WillmoreEnergy, QuadraticEqualsDirectEvaluationWithFrozenWeights)
   }
 }
 
+// add_willmore_quadratic() into dense matrices: Q (both triangles), c, r, and the number of
+// calls for a pair below the diagonal (there should be none).
+struct Dense_quadratic
+{
+  Eigen::MatrixXd Q;
+  Eigen::VectorXd c;
+  double r = 0;
+  std::size_t lower_calls = 0;
+};
+
+Dense_quadratic dense_willmore_quadratic(const Problem& p, const Frozen_willmore_weights& frozen,
+                                         const std::vector<Vec3>* normals = nullptr)
+{
+  std::vector<int> variable_of_vertex(p.mesh.positions.size(), -1);
+  for (std::size_t v = 0; v < p.movable.size(); ++v)
+    variable_of_vertex[std::size_t(p.movable[v])] = int(v);
+  const Eigen::Index n = Eigen::Index(p.movable.size());
+  Dense_quadratic d;
+  d.Q = Eigen::MatrixXd::Zero(n, n);
+  d.c = Eigen::VectorXd::Zero(n);
+  d.r = add_willmore_quadratic(
+      frozen, p.mesh.positions, variable_of_vertex, p.directions,
+      [&](int a, int b, double value) {
+        d.lower_calls += a > b;
+        d.Q(a, b) += value;
+        if (a != b)
+          d.Q(b, a) += value;
+      },
+      [&](int a, double value) { d.c[a] += value; }, normals);
+  return d;
+}
+
 // The fairing's assembly straight into the solver's sink gives the same Q, c and r as the
 // least-squares form with its sparse products.
 TEST(WillmoreEnergy, DirectAssemblyEqualsTheLeastSquaresForm)
@@ -253,27 +285,12 @@ TEST(WillmoreEnergy, DirectAssemblyEqualsTheLeastSquaresForm)
       freeze_willmore_weights(p.mesh.positions, p.mesh.triangles, p.energy_vertices);
   const Willmore_quadratic q =
       willmore_quadratic(frozen, p.mesh.positions, p.movable, p.directions);
-  std::vector<int> variable_of_vertex(p.mesh.positions.size(), -1);
-  for (std::size_t v = 0; v < p.movable.size(); ++v)
-    variable_of_vertex[std::size_t(p.movable[v])] = int(v);
-  const Eigen::Index n = Eigen::Index(p.movable.size());
-  Eigen::MatrixXd Q = Eigen::MatrixXd::Zero(n, n);
-  Eigen::VectorXd c = Eigen::VectorXd::Zero(n);
-  std::size_t lower_calls = 0;
-  const double r = add_willmore_quadratic(
-      frozen, p.mesh.positions, variable_of_vertex, p.directions,
-      [&](int a, int b, double value) {
-        lower_calls += a > b;
-        Q(a, b) += value;
-        if (a != b)
-          Q(b, a) += value;
-      },
-      [&](int a, double value) { c[a] += value; });
-  EXPECT_EQ(lower_calls, 0u);
-  EXPECT_NEAR(r, q.r, 1e-12 * q.r);
+  const Dense_quadratic d = dense_willmore_quadratic(p, frozen);
+  EXPECT_EQ(d.lower_calls, 0u);
+  EXPECT_NEAR(d.r, q.r, 1e-12 * q.r);
   const Eigen::MatrixXd expected = Eigen::MatrixXd(q.Q);
-  EXPECT_LT((Q - expected).lpNorm<Eigen::Infinity>(), 1e-12 * expected.lpNorm<Eigen::Infinity>());
-  EXPECT_LT((c - q.c).lpNorm<Eigen::Infinity>(), 1e-12 * (1 + q.c.lpNorm<Eigen::Infinity>()));
+  EXPECT_LT((d.Q - expected).lpNorm<Eigen::Infinity>(), 1e-12 * expected.lpNorm<Eigen::Infinity>());
+  EXPECT_LT((d.c - q.c).lpNorm<Eigen::Infinity>(), 1e-12 * (1 + q.c.lpNorm<Eigen::Infinity>()));
   EXPECT_GT(expected.lpNorm<Eigen::Infinity>(), 0);
 }
 
@@ -285,26 +302,13 @@ TEST(WillmoreEnergy, NormalPartQuadraticEqualsDirectEvaluation)
   const Problem p = bumpy_problem(rng);
   const Frozen_willmore_weights frozen =
       freeze_willmore_weights(p.mesh.positions, p.mesh.triangles, p.energy_vertices);
-  std::vector<int> variable_of_vertex(p.mesh.positions.size(), -1);
-  for (std::size_t v = 0; v < p.movable.size(); ++v)
-    variable_of_vertex[std::size_t(p.movable[v])] = int(v);
   std::vector<Vec3> normals;
   std::uniform_real_distribution<double> u(-1, 1);
   for (std::size_t i = 0; i < p.energy_vertices.size(); ++i) {
     const Vec3 n{u(rng), u(rng), 1.0};
     normals.push_back(scale(1 / norm(n), n));
   }
-  const Eigen::Index n = Eigen::Index(p.movable.size());
-  Eigen::MatrixXd Q = Eigen::MatrixXd::Zero(n, n);
-  Eigen::VectorXd c = Eigen::VectorXd::Zero(n);
-  const double r = add_willmore_quadratic(
-      frozen, p.mesh.positions, variable_of_vertex, p.directions,
-      [&](int a, int b, double value) {
-        Q(a, b) += value;
-        if (a != b)
-          Q(b, a) += value;
-      },
-      [&](int a, double value) { c[a] += value; }, &normals);
+  const Dense_quadratic d = dense_willmore_quadratic(p, frozen, &normals);
   auto normal_energy = [&](const std::vector<Vec3>& positions) {
     double sum = 0;
     for (std::size_t i = 0; i < p.energy_vertices.size(); ++i) {
@@ -313,12 +317,12 @@ TEST(WillmoreEnergy, NormalPartQuadraticEqualsDirectEvaluation)
     }
     return sum;
   };
-  EXPECT_NEAR(r, normal_energy(p.mesh.positions), 1e-12 * r);
-  EXPECT_LT(r, frozen_willmore_energy(frozen, p.mesh.positions));
+  EXPECT_NEAR(d.r, normal_energy(p.mesh.positions), 1e-12 * d.r);
+  EXPECT_LT(d.r, frozen_willmore_energy(frozen, p.mesh.positions));
   for (int trial = 0; trial < 5; ++trial) {
     const Eigen::VectorXd x = random_x(rng, p.movable.size(), 0.05);
     const double direct = normal_energy(displaced(p, x));
-    EXPECT_NEAR(0.5 * x.dot(Q * x) + c.dot(x) + r, direct, 1e-10 * direct);
+    EXPECT_NEAR(0.5 * x.dot(d.Q * x) + d.c.dot(x) + d.r, direct, 1e-10 * direct);
   }
 }
 
