@@ -64,6 +64,8 @@ const char* usage =
     "  --normal X Y Z        the normal Z of the light plane  } a light tunnel above the mesh,\n"
     "  --spacing S           the distance between lights      } spacing from --lines)\n"
     "  --iterations N        iteration bound (default 50)\n"
+    "  --mean-curvature      fair with the mean curvature energy (the normal part of the\n"
+    "                        Willmore energy; for meshes with slivers or folded triangles)\n"
     "  --detect              automatic mode: find the irregular regions of the whole mesh\n"
     "                        (CGAL::detect_and_fair_highlight_line_irregularities), fair each,\n"
     "                        and write PREFIX_regions.png (before / after, regions tinted: red\n"
@@ -87,6 +89,7 @@ struct Options
   std::string region_file;
   int lines = 12, iterations = 50, width = 800, height = 600;
   bool detect = false;
+  HL::Fairness_energy energy = HL::Fairness_energy::WILLMORE;
   std::size_t max_regions = std::size_t(-1);
 };
 
@@ -118,6 +121,8 @@ Options parse(int argc, char** argv)
       o.lines = int(number(i, argc, argv));
     else if (a == "--detect")
       o.detect = true;
+    else if (a == "--mean-curvature")
+      o.energy = HL::Fairness_energy::MEAN_CURVATURE;
     else if (a == "--max-regions") {
       const double n = number(i, argc, argv);
       if (!(n >= 1))
@@ -235,7 +240,8 @@ int detect_and_fair(Mesh& mesh, const Options& o)
     std::cout << "region " << i + 1 << "/" << found.size() << ": " << std::flush;
     try {
       const HL::Fairing_report report = CGAL::fair_with_highlight_lines(
-          mesh, found[i].faces, lights, CGAL::parameters::number_of_iterations(o.iterations));
+          mesh, found[i].faces, lights,
+          HLP::fairness_energy(CGAL::parameters::number_of_iterations(o.iterations), o.energy));
       ++repaired;
       std::cout << (report.converged() ? "converged" : "stopped") << " after " << report.iterations
                 << " iterations, " << report.number_of_movable_vertices << " movable vertices\n";
@@ -390,7 +396,7 @@ int main(int argc, char** argv)
     const HL::Fairing_report report = CGAL::fair_with_highlight_lines(
         mesh, region, lights,
         HLP::combine(CGAL::parameters::number_of_iterations(o.iterations),
-                     HLP::fairing_visitor(progress)));
+                     HLP::fairing_visitor(progress), HLP::fairness_energy(o.energy)));
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::cout << (report.converged() ? "converged" : "stopped") << " after " << report.iterations

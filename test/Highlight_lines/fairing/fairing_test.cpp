@@ -311,12 +311,14 @@ TEST(Fairing, NoTriangleFlipsAndStepsRespectTheBound)
 }
 
 template <typename Mesh>
-std::vector<Point> faired_points(const Soup& soup, double radius)
+std::vector<Point> faired_points(const Soup& soup, double radius,
+                                 HL::Fairness_energy energy = HL::Fairness_energy::WILLMORE)
 {
   Mesh mesh = to_mesh<Mesh>(soup);
   const auto region = disk_region(mesh, radius);
-  CGAL::fair_with_highlight_lines(mesh, region, hood_lights,
-                                  CGAL::parameters::number_of_iterations(5));
+  CGAL::fair_with_highlight_lines(
+      mesh, region, hood_lights,
+      HLP::fairness_energy(CGAL::parameters::number_of_iterations(5), energy));
   std::vector<Point> points;
   for (auto v : vertices(mesh))
     points.push_back(get(CGAL::vertex_point, mesh, v));
@@ -332,6 +334,12 @@ TEST(Fairing, SurfaceMeshAndPolyhedronAgree)
   // Polyhedron_3 enumerates vertices in insertion order too.
   for (std::size_t i = 0; i < a.size(); ++i)
     EXPECT_LT(CGAL::squared_distance(a[i], b[i]), 1e-20) << i;
+  const auto mean = HL::Fairness_energy::MEAN_CURVATURE;
+  const std::vector<Point> c = faired_points<Surface_mesh>(d.dented, 1.5 * d.radius, mean);
+  const std::vector<Point> e = faired_points<Polyhedron>(d.dented, 1.5 * d.radius, mean);
+  ASSERT_EQ(c.size(), e.size());
+  for (std::size_t i = 0; i < c.size(); ++i)
+    EXPECT_LT(CGAL::squared_distance(c[i], e[i]), 1e-20) << i;
 }
 
 TEST(Fairing, CommutesWithRigidMotionAndScaling)
