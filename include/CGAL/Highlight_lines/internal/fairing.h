@@ -15,8 +15,6 @@
 #include <CGAL/Highlight_lines/internal/ogh_curve.h>
 #include <CGAL/Highlight_lines/internal/willmore_energy.h>
 
-#include <Eigen/Sparse>
-
 #include <algorithm>
 #include <cmath>
 #include <map>
