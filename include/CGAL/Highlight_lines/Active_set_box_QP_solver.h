@@ -154,25 +154,81 @@ public:
     return Box_QP_status::OPTIMAL;
   }
 
-  // Builds the full symmetric matrix (both triangles, duplicates summed) and the norms the
-  // tolerances are relative to. Requires validate() to have succeeded.
+  // Builds the full symmetric matrix (both triangles, duplicates summed, every diagonal
+  // entry present even if zero: solvers replace the rows of active variables by their
+  // diagonal) and the norms the tolerances are relative to. Requires validate() to have
+  // succeeded. The upper triangle is gathered by columns with a counting sort and summed
+  // with a marker array, then mirrored: linear in the number of set_P() calls, which
+  // outnumber the entries several times in an assembly of local stencils.
   void assemble()
   {
-    std::vector<Triplet> both_triangles;
-    both_triangles.reserve(2 * upper_triplets_.size() + n_);
-    // Every diagonal entry is in the pattern, even if zero: solvers replace the rows of
-    // active variables by their diagonal.
-    for (std::size_t i = 0; i < n_; ++i)
-      both_triangles.emplace_back(static_cast<int>(i), static_cast<int>(i), 0.);
-    for (const Triplet& t : upper_triplets_) {
-      both_triangles.push_back(t);
-      if (t.row() != t.col())
-        both_triangles.emplace_back(t.col(), t.row(), t.value());
-    }
     const int n = static_cast<int>(n_);
+    std::vector<int> start(n_ + 1, 0);
+    for (const Triplet& t : upper_triplets_)
+      ++start[t.col() + 1];
+    for (int j = 0; j < n; ++j)
+      start[j + 1] += start[j];
+    std::vector<std::pair<int, double>> by_column(upper_triplets_.size());
+    {
+      std::vector<int> next(start.begin(), start.end() - 1);
+      for (const Triplet& t : upper_triplets_)
+        by_column[next[t.col()]++] = {t.row(), t.value()};
+    }
+    // The upper triangle, compressed, with sorted rows.
+    std::vector<int> upper_start(n_ + 1, 0), upper_rows, slot(n_, -1);
+    std::vector<double> upper_values;
+    upper_rows.reserve(by_column.size() / 2 + n_);
+    upper_values.reserve(upper_rows.capacity());
+    for (int j = 0; j < n; ++j) {
+      const std::size_t first = upper_rows.size();
+      upper_rows.push_back(j);
+      upper_values.push_back(0.);
+      slot[j] = static_cast<int>(first);
+      for (int p = start[j]; p < start[j + 1]; ++p) {
+        const int i = by_column[p].first;
+        if (slot[i] < static_cast<int>(first)) {
+          slot[i] = static_cast<int>(upper_rows.size());
+          upper_rows.push_back(i);
+          upper_values.push_back(0.);
+        }
+        upper_values[slot[i]] += by_column[p].second;
+      }
+      // Few entries per column: an insertion sort of the (row, value) pairs.
+      for (std::size_t a = first + 1; a < upper_rows.size(); ++a)
+        for (std::size_t b = a; b > first && upper_rows[b - 1] > upper_rows[b]; --b) {
+          std::swap(upper_rows[b - 1], upper_rows[b]);
+          std::swap(upper_values[b - 1], upper_values[b]);
+        }
+      upper_start[j + 1] = static_cast<int>(upper_rows.size());
+    }
+    // Column j of Q: column j of the upper triangle, then the rows k > j with an upper entry
+    // (j, k), in increasing k.
+    std::vector<int> count(n_, 0);
+    for (int k = 0; k < n; ++k) {
+      count[k] += upper_start[k + 1] - upper_start[k];
+      for (int p = upper_start[k]; p < upper_start[k + 1] - 1; ++p) // all but the diagonal
+        ++count[upper_rows[p]];
+    }
     Q_.resize(n, n);
-    Q_.setFromTriplets(both_triangles.begin(), both_triangles.end());
-    Q_.makeCompressed();
+    Q_.resizeNonZeros(static_cast<Eigen::Index>(2 * upper_rows.size() - n_));
+    int* outer = Q_.outerIndexPtr();
+    int* inner = Q_.innerIndexPtr();
+    double* values = Q_.valuePtr();
+    outer[0] = 0;
+    for (int j = 0; j < n; ++j)
+      outer[j + 1] = outer[j] + count[j];
+    std::vector<int> next(outer, outer + n);
+    for (int j = 0; j < n; ++j)
+      for (int p = upper_start[j]; p < upper_start[j + 1]; ++p) {
+        inner[next[j]] = upper_rows[p];
+        values[next[j]++] = upper_values[p];
+      }
+    for (int k = 0; k < n; ++k)
+      for (int p = upper_start[k]; p < upper_start[k + 1] - 1; ++p) {
+        const int j = upper_rows[p];
+        inner[next[j]] = k;
+        values[next[j]++] = upper_values[p];
+      }
     diagonal_ = Q_.diagonal();
     Eigen::VectorXd row_sums = Eigen::VectorXd::Zero(n);
     for (int col = 0; col < n; ++col)
@@ -803,7 +859,11 @@ every violated bound is activated once the previous activations turned out mostl
 most half as many releases followed), and right after a warm start only one per
 neighbourhood of radius two (a bound missing from a nearly right active set shows as a bulge
 of violations around it). Fairing problems of \f$ 10^3 \f$ to \f$ 10^5 \f$ variables take
-10 to 20 iterations from a cold start.
+10 to 20 iterations from a cold start. The first activation of a cold start takes one bound
+per neighbourhood of radius two, the bounds that the way from the start to the free
+minimiser crosses first (those of the variables that reach their bound after the shortest
+fraction of that way), as a primal active-set method would: the violations of a free
+minimiser that leaves its box widely say little about which bounds are active.
 
 <b>Linear algebra.</b> \f$ P \f$ is factorised by a supernodal multifrontal
 \f$ LDL^T \f$ factorisation whose dense blocks run as matrix products (several times
@@ -818,6 +878,13 @@ free set are constrained by multipliers, those that joined it are eliminated thr
 dense Schur complement): one solve per changed variable, kept for the next iterations, as
 long as that is cheaper than a new factorisation. Iterative refinement brings the residual
 of every solve to the tolerance. Variables with \f$ l_i = u_i \f$ never enter a system.
+After `set_warm_start()`, the factorisation left by the previous `solve()` (of another
+matrix, but in an iterative method of a nearby one) preconditions conjugate gradients on
+the free subsystems, for as many iterations as a new factorisation would cost (and its
+symbolic analysis, if the pattern changed); only then is a new factorisation made. The
+successive programs of a fairing are solved that way with a factorisation every few outer
+iterations instead of several per iteration. Without a warm start every `solve()`
+factorises afresh, so that a reused solver gives exactly the result of a new one.
 
 <b>Safeguards.</b> If the active set cycles, the primal-dual iteration limit is reached, or a
 free subsystem is singular (semidefinite \f$ P \f$), the solver continues with a monotone
@@ -829,7 +896,8 @@ decreases at every step of that phase, so it cannot cycle; an iteration limit bo
 work. Non-convexity is detected in every factorisation (a negative pivot, or a nonzero
 coupling with a zero pivot): with a cold start the first factorisation is the one of the
 whole \f$ P \f$, so an indefinite \f$ P \f$ is always reported as `NOT_CONVEX`; with a warm
-start only the free subsystems are factorised, and negative curvature confined to the
+start only the free subsystems are factorised, or solved by conjugate gradients (which hand
+over to a factorisation on nonpositive curvature), and negative curvature confined to the
 variables that stay active may go unnoticed (the returned point is then a KKT point whose
 free subsystem is positive definite).
 
@@ -976,6 +1044,7 @@ public:
   /// @}
 
 private:
+  using Inertia = internal::Supernodal_LDLT::Inertia;
   enum Variable_state : signed char { FREE, AT_LOWER, AT_UPPER, FIXED };
 
   // How the primal-dual phase ended.
@@ -1010,8 +1079,13 @@ private:
       report.status = Box_QP_status::OPTIMAL;
       return report;
     }
-    update_analysis();
-    has_factorization_ = false;
+    // The factorisation left by the previous solve() is of another matrix. After a warm start
+    // (the next program of an iterative method, alike the last one) it still preconditions
+    // conjugate gradients well, which is much cheaper than a new factorisation.
+    has_factorization_ = has_factorization_ && had_warm_start &&
+                         inertia_ == Inertia::POSITIVE_DEFINITE && factored_free_.size() == n;
+    factorization_is_stale_ = has_factorization_;
+    preconditioned_iterations_ = 0;
     initialize_states(had_warm_start ? &x0 : nullptr);
 
     Primal_dual_outcome outcome = primal_dual_phase(report, had_warm_start);
@@ -1041,16 +1115,19 @@ private:
 
   // The symbolic analysis (fill-reducing ordering, supernodes) depends on the pattern of P
   // only; it is redone when the pattern changes.
+  bool is_analyzed(const Sparse_matrix& Q) const
+  {
+    return analyzed_outer_.size() == static_cast<std::size_t>(Q.cols() + 1) &&
+           std::equal(analyzed_outer_.begin(), analyzed_outer_.end(), Q.outerIndexPtr()) &&
+           analyzed_inner_.size() == static_cast<std::size_t>(Q.nonZeros()) &&
+           std::equal(analyzed_inner_.begin(), analyzed_inner_.end(), Q.innerIndexPtr());
+  }
+
   void update_analysis()
   {
     const Sparse_matrix& Q = problem_.Q();
     const int n = static_cast<int>(Q.cols());
-    const bool same_pattern =
-        analyzed_outer_.size() == static_cast<std::size_t>(n + 1) &&
-        std::equal(analyzed_outer_.begin(), analyzed_outer_.end(), Q.outerIndexPtr()) &&
-        analyzed_inner_.size() == static_cast<std::size_t>(Q.nonZeros()) &&
-        std::equal(analyzed_inner_.begin(), analyzed_inner_.end(), Q.innerIndexPtr());
-    if (same_pattern)
+    if (is_analyzed(Q))
       return;
     Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> permutation;
     Eigen::AMDOrdering<int> amd;
@@ -1069,6 +1146,7 @@ private:
   internal::Supernodal_LDLT::Inertia factorize(const std::vector<char>& is_free,
                                                Box_QP_report& report)
   {
+    update_analysis();
     const Sparse_matrix& Q = problem_.Q();
     const int n = static_cast<int>(Q.cols());
     masked_values_.resize(static_cast<std::size_t>(Q.nonZeros()));
@@ -1089,6 +1167,7 @@ private:
     bordering_variables_.clear();
     bordering_columns_.resize(n, 0);
     has_factorization_ = true;
+    factorization_is_stale_ = false;
     inertia_ = ldlt_.factorize(masked_values_.data(), pivot_tolerance_);
     if (inertia_ == internal::Supernodal_LDLT::Inertia::INDEFINITE)
       negative_curvature_variable_ = ldlt_.negative_pivot();
@@ -1243,16 +1322,93 @@ private:
     }
   }
 
+  // How many conjugate gradient iterations (one solve with the factorisation and one product
+  // with P each) are worth doing in a solve() before a new factorisation is cheaper. The
+  // dense kernels of a factorisation run about 1.5 times faster per flop than a single
+  // solve; a new pattern costs a symbolic analysis on top, about half a factorisation.
+  std::size_t conjugate_gradient_budget() const
+  {
+    const double product_flops = 2. * double(problem_.Q().nonZeros());
+    const double iteration_flops = ldlt_.solve_flops() + product_flops;
+    const double factorization = ldlt_.factorization_flops() / 3. / iteration_flops;
+    return static_cast<std::size_t>(is_analyzed(problem_.Q()) ? factorization
+                                                              : 1.5 * factorization);
+  }
+
+  // Solves P_FF x_F = -q_F - P_FA x_A (the other entries of x hold their bounds) by conjugate
+  // gradients preconditioned with the stale factorisation of K_F0: K_F0^-1 on the variables
+  // of F n F0, the diagonal of P on those of F \ F0 (a symmetric positive definite operator on
+  // F). Returns false when the budget of iterations of this solve() runs out before the
+  // residual reaches the target of correct_free_entries(), or on nonpositive curvature (which
+  // a new factorisation then tells apart).
+  bool solve_by_preconditioned_cg(const std::vector<char>& is_free, Eigen::VectorXd& x)
+  {
+    const Sparse_matrix& Q = problem_.Q();
+    const Eigen::VectorXd& c = problem_.c();
+    const Eigen::VectorXd& diagonal = problem_.diagonal();
+    const Eigen::Index n = x.size();
+    const std::size_t budget = conjugate_gradient_budget();
+    const auto free_part = [&](Eigen::VectorXd& v) {
+      for (Eigen::Index i = 0; i < n; ++i)
+        if (!is_free[i])
+          v[i] = 0.;
+    };
+    const auto precondition = [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) {
+      z = r;
+      for (Eigen::Index i = 0; i < n; ++i)
+        if (!factored_free_[i])
+          z[i] = 0.;
+      ldlt_.solve(z);
+      for (Eigen::Index i = 0; i < n; ++i)
+        if (!is_free[i])
+          z[i] = 0.;
+        else if (!factored_free_[i])
+          z[i] = r[i] / (diagonal[i] > 0. ? diagonal[i] : 1.);
+    };
+    Eigen::VectorXd r, z, p, Qp;
+    // Restarts from the true residual guard against the drift of the recurrence.
+    for (int restart = 0; restart < 3; ++restart) {
+      r.noalias() = -(Q * x + c);
+      free_part(r);
+      const double target = 0.01 * tolerance_ * problem_.gradient_scale(x.cwiseAbs().maxCoeff());
+      if (r.cwiseAbs().maxCoeff() <= target)
+        return true;
+      precondition(r, z);
+      p = z;
+      double rz = r.dot(z);
+      for (;;) {
+        if (preconditioned_iterations_ >= budget)
+          return false;
+        ++preconditioned_iterations_;
+        Qp.noalias() = Q * p;
+        free_part(Qp);
+        const double curvature = p.dot(Qp);
+        if (!(curvature > 0.) || !(rz > 0.))
+          return false;
+        const double alpha = rz / curvature;
+        x += alpha * p;
+        r -= alpha * Qp;
+        if (r.cwiseAbs().maxCoeff() <= 0.5 * target)
+          break;
+        precondition(r, z);
+        const double rz_next = r.dot(z);
+        p = z + (rz_next / rz) * p;
+        rz = rz_next;
+      }
+    }
+    return false;
+  }
+
   // Result of solving a free subsystem.
   enum class Free_solve { SOLVED, SINGULAR, INDEFINITE, FAILED };
 
   Free_solve solve_free_subsystem(const std::vector<char>& is_free, Eigen::VectorXd& x,
                                   Box_QP_report& report)
   {
-    using Inertia = internal::Supernodal_LDLT::Inertia;
     if (has_factorization_ && inertia_ == Inertia::POSITIVE_DEFINITE) {
       Eigen::VectorXd attempt = x;
-      if (correct_free_entries(is_free, attempt)) {
+      if (factorization_is_stale_ ? solve_by_preconditioned_cg(is_free, attempt)
+                                  : correct_free_entries(is_free, attempt)) {
         x = attempt;
         return Free_solve::SOLVED;
       }
@@ -1310,7 +1466,9 @@ private:
   // decreasing violation (scaled by sqrt(P_ii), an energy) as a maximal independent set of
   // the graph of P -- no two activated variables are coupled -- plus every violating
   // variable whose coupled variables all violate or are active already, so that the inside
-  // of a region pressed against its bounds is activated at once (INDEPENDENT).
+  // of a region pressed against its bounds is activated at once (INDEPENDENT). Given a
+  // point `way_from` within the bounds, the order is instead the one in which the segment
+  // from it to x crosses the bounds.
   enum class Activation {
     ALL,         // every violated bound
     INDEPENDENT, // an independent set of the graph of P, and the insides of violated regions
@@ -1318,7 +1476,8 @@ private:
   };
 
   std::size_t activate_violated_bounds(const Eigen::VectorXd& x, double x_tolerance,
-                                       Activation activation)
+                                       Activation activation,
+                                       const Eigen::VectorXd* way_from = nullptr)
   {
     const Sparse_matrix& Q = problem_.Q();
     const Eigen::VectorXd& l = problem_.l();
@@ -1332,7 +1491,14 @@ private:
         continue;
       const double excess = std::max(l[i] - x[i], x[i] - u[i]);
       if (excess > x_tolerance) {
-        violation_[i] = diagonal[i] > 0. ? excess * std::sqrt(diagonal[i]) : excess;
+        if (way_from != nullptr) {
+          // 1 / (the fraction of the way at which x_i leaves its box)
+          const double bound = x[i] > u[i] ? u[i] : l[i];
+          const double room = std::abs(bound - (*way_from)[i]);
+          const double travel = std::abs(x[i] - (*way_from)[i]);
+          violation_[i] = room > 0. ? travel / room : std::numeric_limits<double>::max();
+        } else
+          violation_[i] = diagonal[i] > 0. ? excess * std::sqrt(diagonal[i]) : excess;
         violators_.push_back(i);
       }
     }
@@ -1421,13 +1587,16 @@ private:
       // Activations that the next iteration mostly keeps are not overshooting: then activate
       // every violated bound, as plain PDAS does. After a warm start, whose active set is
       // meant to be nearly right, a missing active bound shows as a bulge of violations
-      // around it: activate only one per bulge.
+      // around it: activate only one per bulge. After a cold start, the free minimiser may
+      // leave the box far and wide while few bounds are active: activate one per bulge too,
+      // those crossed first on the way from the (feasible) start to it.
       Activation activation = Activation::INDEPENDENT;
       if (previous_activations > 0 && 2 * changes <= previous_activations)
         activation = Activation::ALL;
-      else if (iteration == 0 && warm_started)
+      else if (iteration == 0)
         activation = Activation::SPARSE;
-      previous_activations = activate_violated_bounds(x, x_tolerance, activation);
+      const Eigen::VectorXd* way_from = iteration == 0 && !warm_started ? &x_ : nullptr;
+      previous_activations = activate_violated_bounds(x, x_tolerance, activation, way_from);
       changes += previous_activations;
       const Eigen::VectorXd feasible = problem_.clamp(x);
       if (changes == 0) {
@@ -1450,7 +1619,6 @@ private:
 
   Box_QP_status projected_newton_phase(Box_QP_report& report)
   {
-    using Inertia = internal::Supernodal_LDLT::Inertia;
     const Sparse_matrix& Q = problem_.Q();
     const Eigen::VectorXd& c = problem_.c();
     const Eigen::VectorXd& l = problem_.l();
@@ -1520,7 +1688,7 @@ private:
       Eigen::VectorXd newton_step, v;
       bool took_null_space_step = false;
       for (;;) {
-        if (!has_factorization_ || is_free != factored_free_) {
+        if (!has_factorization_ || factorization_is_stale_ || is_free != factored_free_) {
           if (factorize(is_free, report) == Inertia::INDEFINITE) {
             report.message = not_convex_message();
             return Box_QP_status::NOT_CONVEX;
@@ -1616,6 +1784,10 @@ private:
   internal::Supernodal_LDLT::Inertia inertia_ =
       internal::Supernodal_LDLT::Inertia::POSITIVE_DEFINITE;
   bool has_factorization_ = false;
+  // Whether that factorisation is of the previous solve()'s matrix (a preconditioner only),
+  // and how many preconditioned iterations this solve() has spent.
+  bool factorization_is_stale_ = false;
+  std::size_t preconditioned_iterations_ = 0;
   std::vector<char> factored_free_;
   std::vector<double> masked_values_;
   // The columns of the bordering of the last factorisation, and for which variables.

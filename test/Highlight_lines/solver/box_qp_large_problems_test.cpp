@@ -21,14 +21,18 @@ using Sparse_matrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
 // Q = W^T M^-1 W for the weighted Laplacian W of an m x m grid (with diagonals, random edge
 // weights, Dirichlet boundary) and random "areas" M; bounds |x_i| <= b_i with b_i varying.
+// A jitter changes each inverse area by up to that fraction (and nothing else): the matrix
+// of the next iteration of a fairing, with the same pattern.
 struct Grid_problem
 {
   int m = 0, n = 0;
   Sparse_matrix Q;
   Eigen::VectorXd bound;
 
-  explicit Grid_problem(int side, unsigned seed) : m(side), n(side * side)
+  explicit Grid_problem(int side, unsigned seed, double jitter = 0.) : m(side), n(side * side)
   {
+    std::mt19937 jitter_random(seed + 1000);
+    std::uniform_real_distribution<double> change(-jitter, jitter);
     std::mt19937 random(seed);
     std::uniform_real_distribution<double> weight(0.5, 1.5);
     std::vector<Eigen::Triplet<double>> entries;
@@ -53,7 +57,7 @@ struct Grid_problem
     W.setFromTriplets(entries.begin(), entries.end());
     Eigen::VectorXd inverse_area(n);
     for (int k = 0; k < n; ++k)
-      inverse_area[k] = weight(random);
+      inverse_area[k] = weight(random) * (1. + change(jitter_random));
     Q = Sparse_matrix(W.transpose()) * inverse_area.asDiagonal() * W;
     Q.makeCompressed();
     bound.resize(n);
@@ -216,6 +220,23 @@ TEST(BoxQPLargeProblems, WarmStartOneBoundAwayFromTheOptimumSkipsRefactorisation
   expect_known_solution(grid, problem, result);
   EXPECT_EQ(result.report.iterations, 2u);
   EXPECT_EQ(result.report.factorizations, 1u);
+}
+
+TEST(BoxQPLargeProblems, WarmStartOnANearbyMatrixIsPreconditionedByTheLastFactorisation)
+{
+  // The next program of a fairing: other values of P, a shifted optimum. The factorisation
+  // left by the last solve preconditions conjugate gradients, so that no new one is needed.
+  const Grid_problem grid(150, 6), next_grid(150, 6, 0.02);
+  const Known_solution problem(grid, 0.1, 0.), next(next_grid, 0.1, 0.);
+  Active_set_box_QP_solver solver, fresh;
+  const Result first = solve(solver, grid, problem);
+  expect_known_solution(grid, problem, first);
+  const Result warm = solve(solver, next_grid, next, &first.x);
+  const Result cold = solve(fresh, next_grid, next, &first.x);
+  expect_known_solution(next_grid, next, warm);
+  expect_known_solution(next_grid, next, cold);
+  EXPECT_EQ(warm.report.factorizations, 0u);
+  EXPECT_GE(cold.report.factorizations, 1u);
 }
 
 TEST(BoxQPLargeProblems, MonotonePhaseAloneSolvesAFairingLikeProblem)
