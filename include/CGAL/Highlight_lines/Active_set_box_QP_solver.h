@@ -1339,8 +1339,9 @@ private:
   // gradients preconditioned with the stale factorisation of K_F0: K_F0^-1 on the variables
   // of F n F0, the diagonal of P on those of F \ F0 (a symmetric positive definite operator on
   // F). Returns false when the budget of iterations of this solve() runs out before the
-  // residual reaches the target of correct_free_entries(), or on nonpositive curvature (which
-  // a new factorisation then tells apart).
+  // residual reaches the target of correct_free_entries() -- or is bound to, at the rate of
+  // convergence seen so far --, or on nonpositive curvature (which a new factorisation then
+  // tells apart).
   bool solve_by_preconditioned_cg(const std::vector<char>& is_free, Eigen::VectorXd& x)
   {
     const Sparse_matrix& Q = problem_.Q();
@@ -1376,9 +1377,19 @@ private:
       precondition(r, z);
       p = z;
       double rz = r.dot(z);
-      for (;;) {
+      const double initial_residual = r.norm();
+      const double reduction_needed = std::log(target / r.cwiseAbs().maxCoeff());
+      for (int iteration = 1;; ++iteration) {
         if (preconditioned_iterations_ >= budget)
           return false;
+        if (iteration > 5) {
+          // A preconditioner of a matrix that differs much converges slowly: give up early
+          // rather than waste the budget.
+          const double rate = std::log(r.norm() / initial_residual) / (iteration - 1);
+          const double still_needed = rate < 0. ? reduction_needed / rate - (iteration - 1) : 1e300;
+          if (double(preconditioned_iterations_) + still_needed > double(budget))
+            return false;
+        }
         ++preconditioned_iterations_;
         Qp.noalias() = Q * p;
         free_part(Qp);
