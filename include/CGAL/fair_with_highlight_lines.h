@@ -206,6 +206,11 @@ fair_with_highlight_lines(TriangleMesh& tm, const FaceRange& region,
   if (!(iterations >= 1))
     bad("number_of_iterations must be at least 1");
   options.max_iterations = std::size_t(iterations);
+  if (options.fairness_energy != HL::Fairness_energy::WILLMORE &&
+      options.fairness_energy != HL::Fairness_energy::MEAN_CURVATURE)
+    bad("fairness_energy must be Fairness_energy::WILLMORE or Fairness_energy::MEAN_CURVATURE "
+        "(got the value " +
+        std::to_string(static_cast<int>(options.fairness_energy)) + ")");
   if (!(options.neighborhood_rings >= 2))
     bad("neighborhood_rings must be at least 2 (tangents need two nodes outside the region)");
 

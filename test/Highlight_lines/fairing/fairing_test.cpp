@@ -406,6 +406,12 @@ TEST(BadFairingInput, ClearErrorsAndTheMeshUntouched)
         CGAL::fair_with_highlight_lines(mesh, region, hood_lights, HLP::convergence_threshold(0.0));
       },
       HL::Invalid_input::Problem::INVALID_PARAMETER);
+  expect_problem(
+      [&] {
+        CGAL::fair_with_highlight_lines(mesh, region, hood_lights,
+                                        HLP::fairness_energy(static_cast<HL::Fairness_energy>(7)));
+      },
+      HL::Invalid_input::Problem::INVALID_PARAMETER);
 
   // NaN next to the region.
   Surface_mesh broken = mesh;
