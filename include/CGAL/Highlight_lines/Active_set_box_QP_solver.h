@@ -859,11 +859,12 @@ every violated bound is activated once the previous activations turned out mostl
 most half as many releases followed), and right after a warm start only one per
 neighbourhood of radius two (a bound missing from a nearly right active set shows as a bulge
 of violations around it). Fairing problems of \f$ 10^3 \f$ to \f$ 10^5 \f$ variables take
-10 to 20 iterations from a cold start. The first activation of a cold start takes one bound
-per neighbourhood of radius two, the bounds that the way from the start to the free
-minimiser crosses first (those of the variables that reach their bound after the shortest
-fraction of that way), as a primal active-set method would: the violations of a free
-minimiser that leaves its box widely say little about which bounds are active.
+10 to 20 iterations from a cold start. A cold start activates a single bound first, the one
+that the way from the start to the free minimiser crosses first, as a primal active-set
+method would, then twice as many (the most violated) at each iteration as long as every
+activation clears many other violations, and then continues as above: on a deep dent whose
+steps a few short edges limit, the free minimiser leaves the box at hundreds of vertices
+while a dozen bounds are active, and activating by the violations would overshoot far.
 
 <b>Linear algebra.</b> \f$ P \f$ is factorised by a supernodal multifrontal
 \f$ LDL^T \f$ factorisation whose dense blocks run as matrix products (several times
@@ -1486,9 +1487,21 @@ private:
     SPARSE       // an independent set of the square of that graph
   };
 
+  std::size_t count_violated_bounds(const Eigen::VectorXd& x, double x_tolerance) const
+  {
+    const Eigen::VectorXd& l = problem_.l();
+    const Eigen::VectorXd& u = problem_.u();
+    std::size_t count = 0;
+    for (Eigen::Index i = 0; i < x.size(); ++i)
+      if (state_[i] == FREE && std::max(l[i] - x[i], x[i] - u[i]) > x_tolerance)
+        ++count;
+    return count;
+  }
+
   std::size_t activate_violated_bounds(const Eigen::VectorXd& x, double x_tolerance,
                                        Activation activation,
-                                       const Eigen::VectorXd* way_from = nullptr)
+                                       const Eigen::VectorXd* way_from = nullptr,
+                                       std::size_t limit = std::numeric_limits<std::size_t>::max())
   {
     const Sparse_matrix& Q = problem_.Q();
     const Eigen::VectorXd& l = problem_.l();
@@ -1519,9 +1532,12 @@ private:
     activate_.assign(static_cast<std::size_t>(n), 0);
     std::vector<char>& coupled_to_activated = blocked_;
     coupled_to_activated.assign(static_cast<std::size_t>(n), 0);
+    std::size_t chosen = 0;
     for (int i : violators_) {
       if (coupled_to_activated[i] && activation != Activation::ALL)
         continue;
+      if (chosen++ >= limit)
+        break;
       activate_[i] = 1;
       for (Sparse_matrix::InnerIterator it(Q, i); it; ++it) {
         coupled_to_activated[it.row()] = 1;
@@ -1559,7 +1575,9 @@ private:
     double best_objective = problem_.objective(x_, Q * x_);
     std::vector<char> is_free(static_cast<std::size_t>(n));
     std::unordered_set<std::uint64_t> visited{hash_of_states()};
-    std::size_t previous_activations = 0;
+    std::size_t previous_activations = 0, previous_violations = 0;
+    const std::size_t unlimited = std::numeric_limits<std::size_t>::max();
+    std::size_t activation_limit = warm_started ? unlimited : 1;
 
     for (std::size_t iteration = 0;; ++iteration) {
       if (iteration >= maximum_primal_dual_)
@@ -1595,19 +1613,35 @@ private:
           ++changes;
         }
       }
-      // Activations that the next iteration mostly keeps are not overshooting: then activate
-      // every violated bound, as plain PDAS does. After a warm start, whose active set is
-      // meant to be nearly right, a missing active bound shows as a bulge of violations
-      // around it: activate only one per bulge. After a cold start, the free minimiser may
-      // leave the box far and wide while few bounds are active: activate one per bulge too,
-      // those crossed first on the way from the (feasible) start to it.
+      // A cold start activates one bound first, those crossed first on the way from the
+      // (feasible) start to the free minimiser, then twice as many at each iteration as long
+      // as each activation clears many other violations: a few active bounds then hold the
+      // solution back everywhere (a deep dent whose steps are limited by a few short edges),
+      // and activating by the violations would overshoot far.
+      const std::size_t violations = count_violated_bounds(x, x_tolerance);
+      const bool was_limited = activation_limit != unlimited;
+      if (iteration > 0 && was_limited) {
+        const bool few_hold_many =
+            double(violations) +
+                std::max(3. * double(previous_activations), 0.1 * double(previous_violations)) <
+            double(previous_violations);
+        activation_limit = few_hold_many ? 2 * activation_limit : unlimited;
+      }
+      previous_violations = violations;
+      // Activations that the next iteration mostly keeps (and were not limited) are not
+      // overshooting: then activate every violated bound, as plain PDAS does. After a warm
+      // start, whose active set is meant to be nearly right, a missing active bound shows as
+      // a bulge of violations around it: activate only one per bulge.
       Activation activation = Activation::INDEPENDENT;
-      if (previous_activations > 0 && 2 * changes <= previous_activations)
-        activation = Activation::ALL;
-      else if (iteration == 0)
+      if (iteration == 0)
         activation = Activation::SPARSE;
+      else if (activation_limit != unlimited)
+        activation = Activation::ALL; // the most violated, up to the limit
+      else if (previous_activations > 0 && 2 * changes <= previous_activations && !was_limited)
+        activation = Activation::ALL;
       const Eigen::VectorXd* way_from = iteration == 0 && !warm_started ? &x_ : nullptr;
-      previous_activations = activate_violated_bounds(x, x_tolerance, activation, way_from);
+      previous_activations =
+          activate_violated_bounds(x, x_tolerance, activation, way_from, activation_limit);
       changes += previous_activations;
       const Eigen::VectorXd feasible = problem_.clamp(x);
       if (changes == 0) {
