@@ -249,6 +249,7 @@ struct Run
 {
   std::size_t iterations = 0;
   bool converged = true;
+  std::size_t factorizations = 0; // of the QP solver, over all iterations (ours only)
 };
 
 Run run_method(Method method, const Case& c, Mesh& mesh)
@@ -272,6 +273,8 @@ Run run_method(Method method, const Case& c, Mesh& mesh)
                                             : HL::Fairness_energy::MEAN_CURVATURE));
     run.iterations = r.iterations;
     run.converged = r.converged();
+    for (const HL::Fairing_report::Iteration& step : r.history)
+      run.factorizations += step.solver.factorizations;
     break;
   }
   }
@@ -399,7 +402,8 @@ void print_table(std::ostream& out)
           << (o.willmore <= 1.1 * best_willmore ? "yes" : "NO") << " ("
           << o.willmore / best_willmore << " x best; normal part " << o.mean_curvature / best_n
           << " x best); time <= 2 x PMP::fair: " << (o.x_pmp <= 2 ? "yes" : "NO") << " (" << o.x_pmp
-          << " x)\n";
+          << " x; " << o.run.factorizations << " QP factorisations in " << o.run.iterations
+          << " iterations)\n";
     }
   }
   out << "\n  (*: iteration bound reached before convergence. ogh: RMS / max distance of the "
