@@ -18,6 +18,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <functional>
+#include <algorithm>
 #include <set>
 #include <string>
 #include <vector>
@@ -32,21 +33,30 @@ struct Accept_every_iteration
   bool operator()(const Fairing_report::Iteration&) const { return true; }
 };
 
-// The region as a set, after checking that it is a non-empty range of faces of `tm`.
+// The region as a set, after checking that it is a non-empty range of faces of `tm`. A face
+// belongs to `tm` if it is the face of `tm` with its index: one linear pass over the faces
+// (a set of all faces would cost O(F log F) and an allocation per face, for every region).
 template <typename TriangleMesh, typename FaceRange, typename FaceIndexMap>
 std::set<typename boost::graph_traits<TriangleMesh>::face_descriptor>
 checked_region(const TriangleMesh& tm, const FaceRange& faces_in, FaceIndexMap fim)
 {
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
-  std::set<face_descriptor> all(faces(tm).begin(), faces(tm).end()), region;
+  const face_descriptor null_face = boost::graph_traits<TriangleMesh>::null_face();
+  std::size_t index_bound = 0;
+  for (face_descriptor f : faces(tm))
+    index_bound = (std::max)(index_bound, std::size_t(get(fim, f)) + 1);
+  std::vector<face_descriptor> face_with_index(index_bound, null_face);
+  for (face_descriptor f : faces(tm))
+    face_with_index[std::size_t(get(fim, f))] = f;
+  std::set<face_descriptor> region;
   for (face_descriptor f : faces_in) {
-    if (f == boost::graph_traits<TriangleMesh>::null_face() || all.count(f) == 0)
+    // A foreign face's index is read from the foreign face; it is only compared below.
+    const std::size_t index = f == null_face ? index_bound : std::size_t(get(fim, f));
+    if (index >= index_bound || face_with_index[index] != f)
       throw Invalid_input(Invalid_input::Problem::FACE_NOT_IN_MESH,
                           "fair_with_highlight_lines(): the region contains a face that is not "
                           "a face of the mesh",
-                          f == boost::graph_traits<TriangleMesh>::null_face()
-                              ? Invalid_input::no_element
-                              : std::size_t(get(fim, f)));
+                          f == null_face ? Invalid_input::no_element : index);
     region.insert(f);
   }
   if (region.empty())

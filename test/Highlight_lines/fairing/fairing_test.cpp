@@ -73,11 +73,12 @@ std::vector<typename boost::graph_traits<Mesh>::face_descriptor> disk_region(con
   return region;
 }
 
-std::vector<Point> points_of(const Surface_mesh& mesh)
+template <typename Mesh>
+std::vector<Point> points_of(const Mesh& mesh)
 {
   std::vector<Point> points;
   for (auto v : vertices(mesh))
-    points.push_back(mesh.point(v));
+    points.push_back(get(CGAL::vertex_point, mesh, v));
   return points;
 }
 
@@ -455,6 +456,31 @@ struct Failing_solver
     return report;
   }
 };
+
+// Polyhedron_3's faces are handles: a face of another polyhedron has an index of its own
+// mesh, which must not pass for the face of this one with that index.
+TEST(BadFairingInput, FaceOfAnotherPolyhedronIsRefused)
+{
+  const Dented_hood d = dented_hood(20);
+  Polyhedron mesh = to_mesh<Polyhedron>(d.dented);
+  const Polyhedron other = to_mesh<Polyhedron>(d.dented);
+  std::vector<boost::graph_traits<Polyhedron>::face_descriptor> region =
+      disk_region(mesh, 1.5 * d.radius);
+  region.push_back(disk_region(other, 1.5 * d.radius).front());
+  const std::vector<Point> before = points_of(mesh);
+  try {
+    CGAL::fair_with_highlight_lines(mesh, region, hood_lights);
+    ADD_FAILURE() << "no exception";
+  } catch (const HL::Invalid_input& e) {
+    EXPECT_EQ(e.problem(), HL::Invalid_input::Problem::FACE_NOT_IN_MESH) << e.what();
+  }
+  EXPECT_EQ(points_of(mesh), before);
+  // The same region without the foreign face is accepted.
+  region.pop_back();
+  std::vector<boost::graph_traits<Polyhedron>::vertex_descriptor> movable;
+  EXPECT_NO_THROW(HL::movable_vertices(mesh, region, std::back_inserter(movable)));
+  EXPECT_FALSE(movable.empty());
+}
 
 TEST(BadFairingInput, SolverFailureRollsTheMeshBack)
 {
