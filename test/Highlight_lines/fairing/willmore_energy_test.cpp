@@ -151,6 +151,12 @@ Problem bumpy_problem(std::mt19937& rng, int n = 3)
   return p;
 }
 
+// The areas and cotangent weights of the problem's mesh as it is (the fairing's frozen ones).
+Frozen_willmore_weights frozen_weights(const Problem& p)
+{
+  return freeze_willmore_weights(p.mesh.positions, p.mesh.triangles, p.energy_vertices);
+}
+
 std::vector<Vec3> displaced(const Problem& p, const Eigen::VectorXd& x)
 {
   std::vector<Vec3> positions = p.mesh.positions;
@@ -204,8 +210,7 @@ TEST(WillmoreEnergy, MeanCurvatureNormalMatchesTheEdgeFormula)
 {
   std::mt19937 rng(1);
   const Problem p = bumpy_problem(rng);
-  const Frozen_willmore_weights frozen =
-      freeze_willmore_weights(p.mesh.positions, p.mesh.triangles, p.energy_vertices);
+  const Frozen_willmore_weights frozen = frozen_weights(p);
   ASSERT_EQ(frozen.area.size(), p.energy_vertices.size());
   for (std::size_t row = 0; row < p.energy_vertices.size(); ++row) {
     const Vec3 k = mean_curvature_normal(frozen, row, p.mesh.positions);
@@ -218,8 +223,7 @@ TEST(WillmoreEnergy, QuadraticEqualsDirectEvaluationWithFrozenWeights)
 {
   std::mt19937 rng(2);
   const Problem p = bumpy_problem(rng);
-  const Frozen_willmore_weights frozen =
-      freeze_willmore_weights(p.mesh.positions, p.mesh.triangles, p.energy_vertices);
+  const Frozen_willmore_weights frozen = frozen_weights(p);
   const Willmore_quadratic q =
       willmore_quadratic(frozen, p.mesh.positions, p.movable, p.directions);
   ASSERT_EQ(q.Q.rows(), Eigen::Index(p.movable.size()));
@@ -281,8 +285,7 @@ TEST(WillmoreEnergy, DirectAssemblyEqualsTheLeastSquaresForm)
 {
   std::mt19937 rng(7);
   const Problem p = bumpy_problem(rng);
-  const Frozen_willmore_weights frozen =
-      freeze_willmore_weights(p.mesh.positions, p.mesh.triangles, p.energy_vertices);
+  const Frozen_willmore_weights frozen = frozen_weights(p);
   const Willmore_quadratic q =
       willmore_quadratic(frozen, p.mesh.positions, p.movable, p.directions);
   const Dense_quadratic d = dense_willmore_quadratic(p, frozen);
@@ -300,8 +303,7 @@ TEST(WillmoreEnergy, NormalPartQuadraticEqualsDirectEvaluation)
 {
   std::mt19937 rng(8);
   const Problem p = bumpy_problem(rng);
-  const Frozen_willmore_weights frozen =
-      freeze_willmore_weights(p.mesh.positions, p.mesh.triangles, p.energy_vertices);
+  const Frozen_willmore_weights frozen = frozen_weights(p);
   std::vector<Vec3> normals;
   std::uniform_real_distribution<double> u(-1, 1);
   for (std::size_t i = 0; i < p.energy_vertices.size(); ++i) {
@@ -330,8 +332,7 @@ TEST(WillmoreEnergy, GradientMatchesCentralDifferences)
 {
   std::mt19937 rng(3);
   const Problem p = bumpy_problem(rng);
-  const Frozen_willmore_weights frozen =
-      freeze_willmore_weights(p.mesh.positions, p.mesh.triangles, p.energy_vertices);
+  const Frozen_willmore_weights frozen = frozen_weights(p);
   const Willmore_quadratic q =
       willmore_quadratic(frozen, p.mesh.positions, p.movable, p.directions);
   const Eigen::VectorXd x = random_x(rng, p.movable.size(), 0.05);
@@ -352,9 +353,8 @@ TEST(WillmoreEnergy, HessianIsSymmetricPositiveSemidefinite)
 {
   std::mt19937 rng(4);
   const Problem p = bumpy_problem(rng, 2);
-  const Willmore_quadratic q = willmore_quadratic(
-      freeze_willmore_weights(p.mesh.positions, p.mesh.triangles, p.energy_vertices),
-      p.mesh.positions, p.movable, p.directions);
+  const Willmore_quadratic q =
+      willmore_quadratic(frozen_weights(p), p.mesh.positions, p.movable, p.directions);
   const Eigen::MatrixXd dense = Eigen::MatrixXd(q.Q);
   EXPECT_EQ((dense - dense.transpose()).cwiseAbs().maxCoeff(), 0.0);
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(dense);
