@@ -9,6 +9,7 @@
 #include <CGAL/Highlight_lines/internal/highlight_nodes.h>
 #include <CGAL/Highlight_lines/internal/vertex_normals.h>
 
+#include <algorithm>
 #include <array>
 #include <utility>
 #include <vector>
@@ -34,69 +35,34 @@ inline double dot3(const Vec3& a, const Vec3& b)
 // A node on edge (V1, V2) at level m sits at Q = V1 + t (V2 - V1), t = (m s - d1)/(d2 - d1)
 // (eq. 13). d of a vertex (eq. 1) depends on its position and, through Ñ (eq. 3), on its
 // one-ring, so x_k moves Q when k is V1, V2 or a neighbour of either.
+//
+// It reads the local mesh and the normals it was made with (valid while they do not change)
+// and caches the distance gradients: one object per iteration, used by one thread.
 class Node_jacobian
 {
 public:
-  typedef std::vector<std::pair<int, Vec3>> Row; // (variable, dQ/dx_variable)
+  typedef std::vector<std::pair<int, Vec3>> Row;            // (variable, dQ/dx_variable)
+  typedef std::vector<std::pair<int, double>> Distance_row; // (variable, dd/dx_variable)
 
   template <typename TriangleMesh>
   Node_jacobian(const Local_mesh<TriangleMesh>& lm, const Fairing_region& region,
                 const Vertex_normals& vn, const std::vector<Vec3>& directions, const Vec3& a,
                 const Vec3& h, const Vec3& z)
-      : region_(region), directions_(directions), a_(a), h_(h), z_(z)
+      : region_(region), directions_(directions), a_(a), h_(h), z_(z), xyz_(lm.xyz.data()),
+        normals_(vn.normal.data()), face_vertices_(lm.face_vertices.data()),
+        gradients_(lm.xyz.size() / 3), has_gradient_(lm.xyz.size() / 3, 0)
   {
-    point_ = [&lm](int v) {
-      const double* p = lm.point(v);
-      return Vec3{p[0], p[1], p[2]};
-    };
-    corners_ = [&lm](int f) { return lm.face_vertices[std::size_t(f)]; };
-    normal_ = [&vn](int v) {
-      const double* n = &vn.normal[3 * std::size_t(v)];
-      return Vec3{n[0], n[1], n[2]};
-    };
   }
 
-  // d(d_v)/dx_k for every variable k that moves d_v.
-  std::vector<std::pair<int, double>> distance_gradient(int v) const
+  // d(d_v)/dx_k for every variable k that moves d_v; computed once per vertex (the nodes on
+  // the edges around a vertex share it).
+  const Distance_row& distance_gradient(int v) const
   {
-    // dÑ/dx_k = sum over faces around v containing k of N_k x (p_next(k) - p_prev(k)).
-    std::vector<std::pair<int, Vec3>> dn;
-    for (int i = region_.vertex_face_begin[std::size_t(v)];
-         i < region_.vertex_face_begin[std::size_t(v) + 1]; ++i) {
-      const std::array<int, 3> c = corners_(region_.vertex_faces[std::size_t(i)]);
-      for (int j = 0; j < 3; ++j) {
-        const int var = region_.variable[std::size_t(c[std::size_t(j)])];
-        if (var < 0)
-          continue;
-        const Vec3 p_next = point_(c[std::size_t((j + 1) % 3)]),
-                   p_prev = point_(c[std::size_t((j + 2) % 3)]);
-        const Vec3 d =
-            cross3(directions_[std::size_t(var)],
-                   {p_next[0] - p_prev[0], p_next[1] - p_prev[1], p_next[2] - p_prev[2]});
-        auto it =
-            std::find_if(dn.begin(), dn.end(), [var](const auto& e) { return e.first == var; });
-        if (it == dn.end())
-          dn.emplace_back(var, d);
-        else
-          for (int k = 0; k < 3; ++k)
-            it->second[std::size_t(k)] += d[std::size_t(k)];
-      }
+    if (!has_gradient_[std::size_t(v)]) {
+      compute_distance_gradient(v, gradients_[std::size_t(v)]);
+      has_gradient_[std::size_t(v)] = 1;
     }
-    const Vec3 p = point_(v), n = normal_(v);
-    const Vec3 x = cross3({p[0] - a_[0], p[1] - a_[1], p[2] - a_[2]}, h_);
-    const double num = dot3(x, n), den = dot3(z_, n);
-    std::vector<std::pair<int, double>> result;
-    const int own = region_.variable[std::size_t(v)];
-    for (const auto& e : dn) {
-      double dnum = dot3(x, e.second);
-      if (e.first == own)
-        dnum += dot3(cross3(directions_[std::size_t(own)], h_), n);
-      const double dden = dot3(z_, e.second);
-      result.emplace_back(e.first, (dnum * den - num * dden) / (den * den));
-    }
-    if (own >= 0 && dn.empty()) // a vertex moved without any face around: only its position
-      result.emplace_back(own, dot3(cross3(directions_[std::size_t(own)], h_), n) / den);
-    return result;
+    return gradients_[std::size_t(v)];
   }
 
   // dQ/dx for a node; `levels` gives the current d values, s the spacing.
@@ -126,7 +92,7 @@ public:
     if (D == 0)
       return row;
     const double t = (double(node.level) * s - da) / D;
-    const Vec3 pa = point_(va), pb = point_(vb);
+    const Vec3 pa = point(va), pb = point(vb);
     const Vec3 edge{pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
     for (int end = 0; end < 2; ++end) {
       const int v = end == 0 ? va : vb;
@@ -146,11 +112,67 @@ public:
   }
 
 private:
+  Vec3 point(int v) const
+  {
+    const double* p = xyz_ + 3 * std::size_t(v);
+    return {p[0], p[1], p[2]};
+  }
+  Vec3 normal(int v) const
+  {
+    const double* n = normals_ + 3 * std::size_t(v);
+    return {n[0], n[1], n[2]};
+  }
+
+  void compute_distance_gradient(int v, Distance_row& result) const
+  {
+    // dÑ/dx_k = sum over faces around v containing k of N_k x (p_next(k) - p_prev(k)).
+    std::vector<std::pair<int, Vec3>> dn;
+    for (int i = region_.vertex_face_begin[std::size_t(v)];
+         i < region_.vertex_face_begin[std::size_t(v) + 1]; ++i) {
+      const std::array<int, 3>& c =
+          face_vertices_[std::size_t(region_.vertex_faces[std::size_t(i)])];
+      for (int j = 0; j < 3; ++j) {
+        const int var = region_.variable[std::size_t(c[std::size_t(j)])];
+        if (var < 0)
+          continue;
+        const Vec3 p_next = point(c[std::size_t((j + 1) % 3)]),
+                   p_prev = point(c[std::size_t((j + 2) % 3)]);
+        const Vec3 d =
+            cross3(directions_[std::size_t(var)],
+                   {p_next[0] - p_prev[0], p_next[1] - p_prev[1], p_next[2] - p_prev[2]});
+        auto it =
+            std::find_if(dn.begin(), dn.end(), [var](const auto& e) { return e.first == var; });
+        if (it == dn.end())
+          dn.emplace_back(var, d);
+        else
+          for (int k = 0; k < 3; ++k)
+            it->second[std::size_t(k)] += d[std::size_t(k)];
+      }
+    }
+    const Vec3 p = point(v), n = normal(v);
+    const Vec3 x = cross3({p[0] - a_[0], p[1] - a_[1], p[2] - a_[2]}, h_);
+    const double num = dot3(x, n), den = dot3(z_, n);
+    result.clear();
+    const int own = region_.variable[std::size_t(v)];
+    for (const auto& e : dn) {
+      double dnum = dot3(x, e.second);
+      if (e.first == own)
+        dnum += dot3(cross3(directions_[std::size_t(own)], h_), n);
+      const double dden = dot3(z_, e.second);
+      result.emplace_back(e.first, (dnum * den - num * dden) / (den * den));
+    }
+    if (own >= 0 && dn.empty()) // a vertex moved without any face around: only its position
+      result.emplace_back(own, dot3(cross3(directions_[std::size_t(own)], h_), n) / den);
+  }
+
   const Fairing_region& region_;
   std::vector<Vec3> directions_; // a copy: callers may pass a temporary
   Vec3 a_, h_, z_;
-  std::function<Vec3(int)> point_, normal_;
-  std::function<std::array<int, 3>(int)> corners_;
+  const double* xyz_; // the local mesh's points and Ñ, 3 per vertex
+  const double* normals_;
+  const std::array<int, 3>* face_vertices_;
+  mutable std::vector<Distance_row> gradients_;
+  mutable std::vector<char> has_gradient_;
 };
 
 } // namespace internal
