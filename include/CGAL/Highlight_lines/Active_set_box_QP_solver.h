@@ -158,8 +158,9 @@ public:
   // entry present even if zero: solvers replace the rows of active variables by their
   // diagonal) and the norms the tolerances are relative to. Requires validate() to have
   // succeeded. The upper triangle is gathered by columns with a counting sort and summed
-  // with a marker array, then mirrored: linear in the number of set_P() calls, which
-  // outnumber the entries several times in an assembly of local stencils.
+  // with a marker array; two transpositions then give the lower and the upper part of every
+  // column of Q in increasing rows. Linear in the number of set_P() calls, which outnumber
+  // the entries several times in an assembly of local stencils.
   void assemble()
   {
     const int n = static_cast<int>(n_);
@@ -174,40 +175,35 @@ public:
       for (const Triplet& t : upper_triplets_)
         by_column[next[t.col()]++] = {t.row(), t.value()};
     }
-    // The upper triangle, compressed, with sorted rows.
+    // The upper triangle with duplicates summed, by columns, rows in no particular order;
+    // the diagonal entry first.
     std::vector<int> upper_start(n_ + 1, 0), upper_rows, slot(n_, -1);
     std::vector<double> upper_values;
     upper_rows.reserve(by_column.size() / 2 + n_);
     upper_values.reserve(upper_rows.capacity());
     for (int j = 0; j < n; ++j) {
-      const std::size_t first = upper_rows.size();
+      const int first = static_cast<int>(upper_rows.size());
       upper_rows.push_back(j);
       upper_values.push_back(0.);
-      slot[j] = static_cast<int>(first);
+      slot[j] = first;
       for (int p = start[j]; p < start[j + 1]; ++p) {
         const int i = by_column[p].first;
-        if (slot[i] < static_cast<int>(first)) {
+        if (slot[i] < first) {
           slot[i] = static_cast<int>(upper_rows.size());
           upper_rows.push_back(i);
           upper_values.push_back(0.);
         }
         upper_values[slot[i]] += by_column[p].second;
       }
-      // Few entries per column: an insertion sort of the (row, value) pairs.
-      for (std::size_t a = first + 1; a < upper_rows.size(); ++a)
-        for (std::size_t b = a; b > first && upper_rows[b - 1] > upper_rows[b]; --b) {
-          std::swap(upper_rows[b - 1], upper_rows[b]);
-          std::swap(upper_values[b - 1], upper_values[b]);
-        }
       upper_start[j + 1] = static_cast<int>(upper_rows.size());
     }
-    // Column j of Q: column j of the upper triangle, then the rows k > j with an upper entry
-    // (j, k), in increasing k.
-    std::vector<int> count(n_, 0);
-    for (int k = 0; k < n; ++k) {
-      count[k] += upper_start[k + 1] - upper_start[k];
-      for (int p = upper_start[k]; p < upper_start[k + 1] - 1; ++p) // all but the diagonal
-        ++count[upper_rows[p]];
+    // Column j of Q: the rows i < j (its strictly upper part), then the rows k >= j (the
+    // entries (j, k) of the upper triangle).
+    std::vector<int> upper_count(n_, 0), lower_count(n_, 0);
+    for (int j = 0; j < n; ++j) {
+      upper_count[j] = upper_start[j + 1] - upper_start[j] - 1;
+      for (int p = upper_start[j]; p < upper_start[j + 1]; ++p)
+        ++lower_count[upper_rows[p]];
     }
     Q_.resize(n, n);
     Q_.resizeNonZeros(static_cast<Eigen::Index>(2 * upper_rows.size() - n_));
@@ -216,18 +212,26 @@ public:
     double* values = Q_.valuePtr();
     outer[0] = 0;
     for (int j = 0; j < n; ++j)
-      outer[j + 1] = outer[j] + count[j];
-    std::vector<int> next(outer, outer + n);
+      outer[j + 1] = outer[j] + upper_count[j] + lower_count[j];
+    // Lower parts: visiting the columns k in increasing order appends the rows k of every
+    // column j <= k in increasing order.
+    std::vector<int> next(n_);
     for (int j = 0; j < n; ++j)
-      for (int p = upper_start[j]; p < upper_start[j + 1]; ++p) {
-        inner[next[j]] = upper_rows[p];
-        values[next[j]++] = upper_values[p];
-      }
+      next[j] = outer[j] + upper_count[j];
     for (int k = 0; k < n; ++k)
-      for (int p = upper_start[k]; p < upper_start[k + 1] - 1; ++p) {
+      for (int p = upper_start[k]; p < upper_start[k + 1]; ++p) {
         const int j = upper_rows[p];
         inner[next[j]] = k;
         values[next[j]++] = upper_values[p];
+      }
+    // Upper parts: the mirror of the lower parts, visited by increasing column.
+    for (int j = 0; j < n; ++j)
+      next[j] = outer[j];
+    for (int j = 0; j < n; ++j)
+      for (int p = outer[j] + upper_count[j] + 1; p < outer[j + 1]; ++p) { // below the diagonal
+        const int k = inner[p];
+        inner[next[k]] = j;
+        values[next[k]++] = values[p];
       }
     diagonal_ = Q_.diagonal();
     Eigen::VectorXd row_sums = Eigen::VectorXd::Zero(n);
@@ -538,13 +542,19 @@ public:
     // of a supernode are on top of the stack when it is processed.
     std::vector<Eigen::MatrixXd> updates;
     std::vector<int> updating_supernode;
-    Eigen::MatrixXd F, W;
+    Eigen::MatrixXd T, W;
     Eigen::VectorXd weights;
     for (int s = 0; s < supernodes; ++s) {
       const int first = super_first_[s], k = super_first_[s + 1] - first;
       const int below = struct_start_[s + 1] - struct_start_[s], r = k + below;
-      F.setZero(r, r);
+      // The frontal matrix in two parts that need no copying afterwards: its first k columns
+      // F (r x k) are factorised in place, in L, and its lower right block T (below x below)
+      // becomes the update matrix. Entries of A lie in the first k columns only.
+      Eigen::Map<Eigen::MatrixXd> F(L_.data() + panel_start_[s], r, k);
+      F.setZero();
+      T.setZero(below, below);
       double* f = F.data();
+      double* t = T.data();
       for (int q = assembly_start_[s]; q < assembly_start_[s + 1]; ++q)
         f[assembly_position_[q]] += values[assembly_source_[q]];
       while (!updating_supernode.empty() && super_parent_[updating_supernode.back()] == s) {
@@ -552,10 +562,16 @@ public:
         const int* rel = relative_.data() + struct_start_[updating_supernode.back()];
         const int size = static_cast<int>(U.rows());
         for (int b = 0; b < size; ++b) {
-          double* column = f + static_cast<std::ptrdiff_t>(rel[b]) * r;
           const double* u = U.data() + static_cast<std::ptrdiff_t>(b) * size;
-          for (int a = b; a < size; ++a)
-            column[rel[a]] += u[a];
+          if (rel[b] < k) {
+            double* column = f + static_cast<std::ptrdiff_t>(rel[b]) * r;
+            for (int a = b; a < size; ++a)
+              column[rel[a]] += u[a];
+          } else { // rel is increasing: the rows a >= b of a column of T lie in T too
+            double* column = t + static_cast<std::ptrdiff_t>(rel[b] - k) * below;
+            for (int a = b; a < size; ++a)
+              column[rel[a] - k] += u[a];
+          }
         }
         updates.pop_back();
         updating_supernode.pop_back();
@@ -603,13 +619,11 @@ public:
           F(j, j) = 1.;
         }
       }
-      Eigen::Map<Eigen::MatrixXd>(L_.data() + panel_start_[s], r, k) = F.leftCols(k);
       if (below > 0) {
         const auto L21 = F.block(k, 0, below, k);
         W.noalias() = L21 * Eigen::Map<const Eigen::VectorXd>(D_.data() + first, k).asDiagonal();
-        Eigen::MatrixXd U = F.block(k, k, below, below);
-        U.triangularView<Eigen::Lower>() -= W * L21.transpose();
-        updates.push_back(std::move(U));
+        T.triangularView<Eigen::Lower>() -= W * L21.transpose();
+        updates.push_back(std::move(T));
         updating_supernode.push_back(s);
       }
     }
@@ -1131,8 +1145,10 @@ private:
     if (is_analyzed(Q))
       return;
     Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> permutation;
-    Eigen::AMDOrdering<int> amd;
-    amd(Q, permutation);
+    // Q is stored whole (both triangles and the diagonal), as Eigen's AMD routine wants it:
+    // a copy of it saves the symmetrisation of Eigen::AMDOrdering.
+    Sparse_matrix pattern = Q;
+    Eigen::internal::minimum_degree_ordering(pattern, permutation);
     // AMD returns, for each elimination position, the variable eliminated there.
     const std::vector<int> ordering(permutation.indices().data(), permutation.indices().data() + n);
     ldlt_.analyze(n, Q.outerIndexPtr(), Q.innerIndexPtr(), ordering);
