@@ -321,6 +321,60 @@ private:
   double Q_norm_ = 0., c_norm_ = 0.;
 };
 
+// The column counts of the Cholesky factor L of A (diagonal included) from the elimination
+// tree of A, numbered in postorder (tree[j]: the parent of j, -1 for a root), and the lower
+// triangle of A by columns (Bp, Bi), in almost O(nnz(A)) instead of O(nnz(L)): the
+// skeleton-matrix method of Gilbert, Ng and Peyton (1994) as in CSparse's cs_counts. Row i
+// of L is the union of the tree paths from the columns j < i of row i of A up to i; delta
+// counts, per column, where such paths start (leaves of row subtrees) minus where two of
+// them meet (least common ancestors of consecutive leaves), and the counts are the sums of
+// delta over subtrees.
+inline void cholesky_column_counts(const std::vector<int>& tree, const std::vector<int>& Bp,
+                                   const std::vector<int>& Bi, std::vector<int>& count)
+{
+  const int n = static_cast<int>(tree.size());
+  std::vector<int> first(n, -1), max_first(n, -1), previous_leaf(n, -1), ancestor(n);
+  count.assign(n, 0);
+  // first[j]: the first descendant of j in postorder; a leaf of the tree starts a path.
+  for (int k = 0; k < n; ++k) {
+    count[k] = first[k] == -1 ? 1 : 0;
+    for (int j = k; j != -1 && first[j] == -1; j = tree[j])
+      first[j] = k;
+  }
+  for (int i = 0; i < n; ++i)
+    ancestor[i] = i;
+  for (int j = 0; j < n; ++j) {
+    if (tree[j] != -1)
+      --count[tree[j]];
+    for (int q = Bp[j]; q < Bp[j + 1]; ++q) {
+      const int i = Bi[q];
+      // Is j a leaf of the subtree of row i (no earlier column of row i below j)?
+      if (i <= j || first[j] <= max_first[i])
+        continue;
+      max_first[i] = first[j];
+      const int previous = previous_leaf[i];
+      previous_leaf[i] = j;
+      ++count[j];
+      if (previous != -1) { // the paths from previous and j meet at their common ancestor
+        int meet = previous;
+        while (meet != ancestor[meet])
+          meet = ancestor[meet];
+        for (int v = previous; v != meet;) {
+          const int up = ancestor[v];
+          ancestor[v] = meet;
+          v = up;
+        }
+        --count[meet];
+      }
+    }
+    if (tree[j] != -1)
+      ancestor[j] = tree[j];
+  }
+  for (int j = 0; j < n; ++j) // children precede their parent in postorder
+    if (tree[j] != -1)
+      count[tree[j]] += count[j];
+}
+
 // Multifrontal supernodal L D L^T factorisation of a sparse symmetric matrix, without
 // pivoting, that tells positive definite, positive semidefinite and indefinite matrices apart
 // while it factorises. A pivot below -tolerance times its diagonal entry proves negative
@@ -395,25 +449,18 @@ public:
     for (int k = 0; k < n; ++k)
       position[permutation_[k]] = k;
 
-    // The lower triangle in the final order, by columns (B) and by rows (R); Bsource is the
-    // position of the entry in the input arrays.
-    std::vector<int> Bp(n + 1, 0), Rp(n + 1, 0);
+    // The lower triangle in the final order, by columns; Bsource is the position of the entry
+    // in the input arrays.
+    std::vector<int> Bp(n + 1, 0);
     for (int j = 0; j < n; ++j)
       for (int p = outer[j]; p < outer[j + 1]; ++p)
-        if (inner[p] >= j) {
-          const int a = position[inner[p]], b = position[j];
-          ++Bp[std::min(a, b) + 1];
-          if (a != b)
-            ++Rp[std::max(a, b) + 1];
-        }
-    for (int j = 0; j < n; ++j) {
+        if (inner[p] >= j)
+          ++Bp[std::min(position[inner[p]], position[j]) + 1];
+    for (int j = 0; j < n; ++j)
       Bp[j + 1] += Bp[j];
-      Rp[j + 1] += Rp[j];
-    }
-    std::vector<int> Bi(static_cast<std::size_t>(Bp[n])), Bsource(Bi.size()),
-        Rj(static_cast<std::size_t>(Rp[n]));
+    std::vector<int> Bi(static_cast<std::size_t>(Bp[n])), Bsource(Bi.size());
     {
-      std::vector<int> next(Bp.begin(), Bp.end() - 1), next_row(Rp.begin(), Rp.end() - 1);
+      std::vector<int> next(Bp.begin(), Bp.end() - 1);
       for (int j = 0; j < n; ++j)
         for (int p = outer[j]; p < outer[j + 1]; ++p)
           if (inner[p] >= j) {
@@ -421,25 +468,14 @@ public:
             const int q = next[std::min(a, b)]++;
             Bi[q] = std::max(a, b);
             Bsource[q] = p;
-            if (a != b)
-              Rj[next_row[std::max(a, b)]++] = std::min(a, b);
           }
     }
 
-    // Column counts of L: row k of L is the union of the tree paths from the columns of row
-    // k of A up to k.
-    std::vector<int> column_count(n, 0), flag(n, -1), children(n, 0);
-    for (int k = 0; k < n; ++k) {
+    std::vector<int> column_count, flag(n, -1), children(n, 0);
+    for (int k = 0; k < n; ++k)
       if (tree[k] != -1)
         ++children[tree[k]];
-      flag[k] = k;
-      ++column_count[k];
-      for (int q = Rp[k]; q < Rp[k + 1]; ++q)
-        for (int i = Rj[q]; flag[i] != k; i = tree[i]) {
-          ++column_count[i];
-          flag[i] = k;
-        }
-    }
+    cholesky_column_counts(tree, Bp, Bi, column_count);
 
     find_supernodes(tree, column_count, children);
     const int supernodes = number_of_supernodes();

@@ -7,6 +7,8 @@
 #include <Eigen/SparseCholesky>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <functional>
 #include <numeric>
 #include <random>
 #include <vector>
@@ -78,6 +80,76 @@ TEST(SupernodalLDLT, SolvesDefiniteSystemsLikeEigenSimplicialLDLT)
       EXPECT_LE((x - reference).norm(), 1e-8 * reference.norm()) << "n = " << n;
       EXPECT_EQ(ldlt.number_of_zero_pivots(), 0);
     }
+  }
+}
+
+// The column counts of the factor, computed from the elimination tree in almost O(nnz(A)),
+// against a symbolic elimination on dense boolean columns, on random patterns (connected or
+// not, sparse or dense), renumbered in a postorder of their elimination tree as the
+// factorisation does.
+TEST(SupernodalLDLT, ColumnCountsMatchASymbolicElimination)
+{
+  std::mt19937 random(7);
+  for (int trial = 0; trial < 40; ++trial) {
+    const int n = 1 + static_cast<int>(random() % 70);
+    const Sparse_matrix A =
+        random_graph_matrix(random, n, static_cast<int>(random() % (3 * n + 1)), 1., trial % 2);
+    // Symbolic elimination in the natural order: the rows below the diagonal of each column.
+    const auto eliminate = [n](const std::vector<std::vector<char>>& below) {
+      std::vector<std::vector<char>> L = below;
+      std::vector<int> parent(n, -1);
+      for (int j = 0; j < n; ++j)
+        for (int i = j + 1; i < n; ++i)
+          if (L[j][i]) {
+            if (parent[j] == -1)
+              parent[j] = i;
+            else
+              L[parent[j]][i] = 1;
+          }
+      std::vector<int> count(n, 1);
+      for (int j = 0; j < n; ++j)
+        count[j] += static_cast<int>(std::count(L[j].begin() + j + 1, L[j].end(), 1));
+      return std::make_pair(parent, count);
+    };
+    std::vector<std::vector<char>> below(n, std::vector<char>(n, 0));
+    for (int j = 0; j < n; ++j)
+      for (Sparse_matrix::InnerIterator it(A, j); it; ++it)
+        if (it.row() > j)
+          below[j][it.row()] = 1;
+    const auto [parent, count] = eliminate(below);
+    // A postorder (children in increasing order, roots in increasing order).
+    std::vector<std::vector<int>> children(n);
+    for (int j = 0; j < n; ++j)
+      if (parent[j] != -1)
+        children[parent[j]].push_back(j);
+    std::vector<int> post, position(n);
+    const std::function<void(int)> visit = [&](int j) {
+      for (int c : children[j])
+        visit(c);
+      position[j] = static_cast<int>(post.size());
+      post.push_back(j);
+    };
+    for (int j = 0; j < n; ++j)
+      if (parent[j] == -1)
+        visit(j);
+    // The tree and the lower triangle of A (diagonal included) in the postorder.
+    std::vector<int> tree(n, -1), Bp(n + 1, 0), Bi;
+    for (int j = 0; j < n; ++j)
+      if (parent[j] != -1)
+        tree[position[j]] = position[parent[j]];
+    for (int k = 0; k < n; ++k) {
+      std::vector<int> rows;
+      for (Sparse_matrix::InnerIterator it(A, post[k]); it; ++it)
+        if (position[it.row()] >= k)
+          rows.push_back(position[it.row()]);
+      std::sort(rows.begin(), rows.end());
+      Bi.insert(Bi.end(), rows.begin(), rows.end());
+      Bp[k + 1] = static_cast<int>(Bi.size());
+    }
+    std::vector<int> computed;
+    CGAL::Highlight_lines::internal::cholesky_column_counts(tree, Bp, Bi, computed);
+    for (int j = 0; j < n; ++j)
+      ASSERT_EQ(computed[position[j]], count[j]) << "trial " << trial << ", column " << j;
   }
 }
 
