@@ -19,7 +19,6 @@
 
 #include <functional>
 #include <algorithm>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -33,22 +32,68 @@ struct Accept_every_iteration
   bool operator()(const Fairing_report::Iteration&) const { return true; }
 };
 
-// The region as a set, after checking that it is a non-empty range of faces of `tm`. A face
-// belongs to `tm` if it is the face of `tm` with its index: one linear pass over the faces
-// (a set of all faces would cost O(F log F) and an allocation per face, for every region).
+// The faces of a region, looked up by face index: the fairing asks whether a face is in the
+// region hundreds of thousands of times, which a std::set answers with a tree walk each.
+template <typename TriangleMesh, typename FaceIndexMap>
+class Face_region
+{
+public:
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  typedef typename std::vector<face_descriptor>::const_iterator const_iterator;
+
+  Face_region(FaceIndexMap fim, std::size_t index_bound) : fim_(fim), marked_(index_bound, 0) {}
+
+  // Requires a face of the mesh.
+  bool insert(face_descriptor f)
+  {
+    char& mark = marked_[std::size_t(get(fim_, f))];
+    if (mark)
+      return false;
+    mark = 1;
+    faces_.push_back(f);
+    return true;
+  }
+  // 1 for a face of the mesh in the region, else 0.
+  std::size_t count(face_descriptor f) const
+  {
+    const std::size_t index = std::size_t(get(fim_, f));
+    return index < marked_.size() && marked_[index] ? 1 : 0;
+  }
+  const_iterator begin() const { return faces_.begin(); } // in the order of insertion
+  const_iterator end() const { return faces_.end(); }
+  std::size_t size() const { return faces_.size(); }
+  bool empty() const { return faces_.empty(); }
+
+private:
+  FaceIndexMap fim_;
+  std::vector<char> marked_;
+  std::vector<face_descriptor> faces_;
+};
+
+// One more than the largest face index of `tm`.
+template <typename TriangleMesh, typename FaceIndexMap>
+std::size_t face_index_bound(const TriangleMesh& tm, FaceIndexMap fim)
+{
+  std::size_t bound = 0;
+  for (auto f : faces(tm))
+    bound = (std::max)(bound, std::size_t(get(fim, f)) + 1);
+  return bound;
+}
+
+// The region, after checking that it is a non-empty range of faces of `tm`. A face belongs
+// to `tm` if it is the face of `tm` with its index: one linear pass over the faces (a set of
+// all faces would cost O(F log F) and an allocation per face, for every region).
 template <typename TriangleMesh, typename FaceRange, typename FaceIndexMap>
-std::set<typename boost::graph_traits<TriangleMesh>::face_descriptor>
-checked_region(const TriangleMesh& tm, const FaceRange& faces_in, FaceIndexMap fim)
+Face_region<TriangleMesh, FaceIndexMap> checked_region(const TriangleMesh& tm,
+                                                       const FaceRange& faces_in, FaceIndexMap fim)
 {
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
   const face_descriptor null_face = boost::graph_traits<TriangleMesh>::null_face();
-  std::size_t index_bound = 0;
-  for (face_descriptor f : faces(tm))
-    index_bound = (std::max)(index_bound, std::size_t(get(fim, f)) + 1);
+  const std::size_t index_bound = face_index_bound(tm, fim);
   std::vector<face_descriptor> face_with_index(index_bound, null_face);
   for (face_descriptor f : faces(tm))
     face_with_index[std::size_t(get(fim, f))] = f;
-  std::set<face_descriptor> region;
+  Face_region<TriangleMesh, FaceIndexMap> region(fim, index_bound);
   for (face_descriptor f : faces_in) {
     // A foreign face's index is read from the foreign face; it is only compared below.
     const std::size_t index = f == null_face ? index_bound : std::size_t(get(fim, f));
@@ -65,24 +110,30 @@ checked_region(const TriangleMesh& tm, const FaceRange& faces_in, FaceIndexMap f
   return region;
 }
 
-// The region and `rings` rings of faces around it: where highlight lines are recomputed.
-template <typename TriangleMesh, typename FaceSet>
+// The region (faces of `tm`) and `rings` rings of faces around it, by increasing face index:
+// where highlight lines are recomputed.
+template <typename TriangleMesh, typename FaceSet, typename FaceIndexMap>
 std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>
-neighborhood(const TriangleMesh& tm, const FaceSet& region, int rings)
+neighborhood(const TriangleMesh& tm, const FaceSet& region, int rings, FaceIndexMap fim)
 {
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
-  std::set<face_descriptor> result(region.begin(), region.end());
-  std::vector<face_descriptor> front(region.begin(), region.end());
+  Face_region<TriangleMesh, FaceIndexMap> result(fim, face_index_bound(tm, fim));
+  for (face_descriptor f : region)
+    result.insert(f);
+  std::vector<face_descriptor> front(result.begin(), result.end());
   for (int ring = 0; ring < rings; ++ring) {
     std::vector<face_descriptor> next;
     for (face_descriptor f : front)
       for (auto v : vertices_around_face(halfedge(f, tm), tm))
         for (face_descriptor g : faces_around_target(halfedge(v, tm), tm))
-          if (g != boost::graph_traits<TriangleMesh>::null_face() && result.insert(g).second)
+          if (g != boost::graph_traits<TriangleMesh>::null_face() && result.insert(g))
             next.push_back(g);
     front.swap(next);
   }
-  return std::vector<face_descriptor>(result.begin(), result.end());
+  std::vector<face_descriptor> faces_by_index(result.begin(), result.end());
+  std::sort(faces_by_index.begin(), faces_by_index.end(),
+            [fim](face_descriptor a, face_descriptor b) { return get(fim, a) < get(fim, b); });
+  return faces_by_index;
 }
 
 } // namespace internal
@@ -225,7 +276,8 @@ fair_with_highlight_lines(TriangleMesh& tm, const FaceRange& region,
     bad("neighborhood_rings must be at least 2 (tangents need two nodes outside the region)");
 
   const auto region_set = HL::internal::checked_region(tm, region, fim);
-  const auto neighborhood = HL::internal::neighborhood(tm, region_set, options.neighborhood_rings);
+  const auto neighborhood =
+      HL::internal::neighborhood(tm, region_set, options.neighborhood_rings, fim);
 
   HL::Active_set_box_QP_solver default_solver;
   auto& solver =

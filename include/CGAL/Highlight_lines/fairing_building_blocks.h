@@ -28,14 +28,15 @@ auto fairing_setup(const TriangleMesh& tm, const FaceRange& region,
   options.neighborhood_rings = CGAL::parameters::choose_parameter(
       CGAL::parameters::get_parameter(np, internal_np::neighborhood_rings), 3);
   options.window = Highlight_line_sweeper<TriangleMesh>::level_window(np);
-  const auto region_set = checked_region(tm, region, get_initialized_face_index_map(tm, np));
+  const auto fim = get_initialized_face_index_map(tm, np);
+  const auto region_set = checked_region(tm, region, fim);
   static Active_set_box_QP_solver unused_solver;
   // The set-up only reads the mesh: the const_cast lets it share the fairing's code.
   return std::make_unique<
       Fairing<TriangleMesh, Vertex_point_map, GeomTraits, Active_set_box_QP_solver>>(
       const_cast<TriangleMesh&>(tm), region_set,
-      neighborhood(tm, region_set, (std::max)(options.neighborhood_rings, 2)), vpm, lights, options,
-      unused_solver);
+      neighborhood(tm, region_set, (std::max)(options.neighborhood_rings, 2), fim), vpm, lights,
+      options, unused_solver);
 }
 } // namespace internal
 /// \endcond

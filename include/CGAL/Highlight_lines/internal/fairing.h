@@ -83,16 +83,11 @@ public:
     // Mean edge length in R (eq. 17) and the length scale of q_diff's normalisation.
     double length_sum = 0, area = 0;
     std::size_t edges = 0;
-    for (std::size_t e = 0; e < lm.edge_vertices.size(); ++e) {
-      const typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h =
-          lm.edge_halfedges[e];
-      const auto f = face(h, tm), g = face(opposite(h, tm), tm);
-      if ((f != boost::graph_traits<TriangleMesh>::null_face() && region.count(f)) ||
-          (g != boost::graph_traits<TriangleMesh>::null_face() && region.count(g))) {
+    for (std::size_t e = 0; e < lm.edge_vertices.size(); ++e)
+      if (region_.edge_touches_region[e]) {
         length_sum += distance(lm.edge_vertices[e][0], lm.edge_vertices[e][1]);
         ++edges;
       }
-    }
     for (std::size_t f = 0; f < lm.face_vertices.size(); ++f)
       if (region_.face_in_region[f]) {
         const Vec3 c = face_cross(int(f));

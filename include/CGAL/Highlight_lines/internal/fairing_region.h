@@ -34,6 +34,7 @@ struct Fairing_region
   std::vector<char> face_in_region;                 // per local face
   std::vector<char> vertex_inside;                  // per model vertex
   std::vector<char> edge_inside;                    // per local edge: both faces in R
+  std::vector<char> edge_touches_region;            // per local edge: a face in R
   std::vector<int> movable;                         // local vertex ids
   std::vector<int> variable;                        // per local vertex: index in `movable`, or -1
   std::vector<int> energy_vertices;                 // the vertices inside R (eq. 6 sums over them)
@@ -46,7 +47,6 @@ void build_fairing_region(const TriangleMesh& tm, const Local_mesh<TriangleMesh>
                           IsInRegion&& is_in_region, Fairing_region& out)
 {
   typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
-  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
   const std::size_t nf = lm.face_vertices.size(), nv = lm.vertex_handles.size(),
                     nmv = lm.number_of_model_vertices;
 
@@ -67,26 +67,34 @@ void build_fairing_region(const TriangleMesh& tm, const Local_mesh<TriangleMesh>
     for (int v : lm.face_vertices[f])
       out.vertex_faces[std::size_t(count[std::size_t(v)]++)] = int(f);
 
+  // The region is asked once per face (it may be a std::set): the rest reads face_in_region.
+  // Inside: no mesh border at the vertex and its whole one-ring, which the local mesh holds
+  // for model vertices, in R.
   out.vertex_inside.assign(nmv, 0);
   for (std::size_t v = 0; v < nmv; ++v) {
     bool inside = true;
-    for (halfedge_descriptor h : halfedges_around_target(halfedge(lm.vertex_handles[v], tm), tm)) {
-      const face_descriptor f = face(h, tm);
-      if (f == boost::graph_traits<TriangleMesh>::null_face() || !is_in_region(f)) {
-        inside = false;
-        break;
-      }
-    }
+    for (int i = out.vertex_face_begin[v]; i < out.vertex_face_begin[v + 1] && inside; ++i)
+      inside = out.face_in_region[std::size_t(out.vertex_faces[std::size_t(i)])] != 0;
+    if (inside)
+      for (halfedge_descriptor h : halfedges_around_target(halfedge(lm.vertex_handles[v], tm), tm))
+        if (face(h, tm) == boost::graph_traits<TriangleMesh>::null_face()) {
+          inside = false;
+          break;
+        }
     out.vertex_inside[v] = inside;
   }
 
-  out.edge_inside.assign(lm.edge_halfedges.size(), 0);
-  for (std::size_t e = 0; e < lm.edge_halfedges.size(); ++e) {
-    const halfedge_descriptor h = lm.edge_halfedges[e];
-    const face_descriptor f = face(h, tm), g = face(opposite(h, tm), tm);
-    out.edge_inside[e] = f != boost::graph_traits<TriangleMesh>::null_face() &&
-                         g != boost::graph_traits<TriangleMesh>::null_face() && is_in_region(f) &&
-                         is_in_region(g);
+  // Every edge belongs to a model face, and faces in R are model faces.
+  std::vector<unsigned char> faces_in_region(lm.edge_halfedges.size(), 0);
+  for (std::size_t f = 0; f < lm.number_of_model_faces; ++f)
+    if (out.face_in_region[f])
+      for (int e : lm.face_edges[f])
+        ++faces_in_region[std::size_t(e)];
+  out.edge_inside.assign(faces_in_region.size(), 0);
+  out.edge_touches_region.assign(faces_in_region.size(), 0);
+  for (std::size_t e = 0; e < faces_in_region.size(); ++e) {
+    out.edge_inside[e] = faces_in_region[e] == 2;
+    out.edge_touches_region[e] = faces_in_region[e] > 0;
   }
 
   // One-rings of model vertices, from the local faces.
