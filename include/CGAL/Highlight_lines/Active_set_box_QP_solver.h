@@ -495,6 +495,7 @@ public:
     }
     struct_start_.assign(supernodes + 1, 0);
     struct_rows_.clear();
+    max_below_ = 0;
     std::fill(flag.begin(), flag.end(), -1);
     for (int s = 0; s < supernodes; ++s) {
       const int last = super_first_[s + 1] - 1;
@@ -515,6 +516,7 @@ public:
         }
       std::sort(struct_rows_.begin() + static_cast<std::ptrdiff_t>(begin), struct_rows_.end());
       struct_start_[s + 1] = static_cast<int>(struct_rows_.size());
+      max_below_ = std::max(max_below_, struct_start_[s + 1] - struct_start_[s]);
     }
 
     // Where the entries of A and the rows of the children's update matrices go in the
@@ -822,7 +824,7 @@ private:
   void forward_substitute(Rows& Y) const
   {
     const int supernodes = number_of_supernodes();
-    Rows t;
+    Rows buffer(max_below_, Y.cols()); // allocated once: most supernodes are small
     for (int s = 0; s < supernodes; ++s) {
       const int first = super_first_[s], k = super_first_[s + 1] - first;
       const int below = struct_start_[s + 1] - struct_start_[s];
@@ -830,6 +832,7 @@ private:
       auto X = Y.middleRows(first, k);
       panel.topRows(k).template triangularView<Eigen::UnitLower>().solveInPlace(X);
       if (below > 0) {
+        auto t = buffer.topRows(below);
         t.noalias() = panel.bottomRows(below) * X;
         const int* rows = struct_rows_.data() + struct_start_[s];
         for (int a = 0; a < below; ++a)
@@ -852,14 +855,14 @@ private:
   template <class Rows>
   void backward_substitute(Rows& Y) const
   {
-    Rows t;
+    Rows buffer(max_below_, Y.cols());
     for (int s = number_of_supernodes() - 1; s >= 0; --s) {
       const int first = super_first_[s], k = super_first_[s + 1] - first;
       const int below = struct_start_[s + 1] - struct_start_[s];
       Eigen::Map<const Eigen::MatrixXd> panel(L_.data() + panel_start_[s], k + below, k);
       auto X = Y.middleRows(first, k);
       if (below > 0) {
-        t.resize(below, Y.cols());
+        auto t = buffer.topRows(below);
         const int* rows = struct_rows_.data() + struct_start_[s];
         for (int a = 0; a < below; ++a)
           t.row(a) = Y.row(rows[a]);
@@ -872,6 +875,7 @@ private:
   int n_ = 0;
   std::vector<int> permutation_; // the variable at each position of the factorisation
   std::vector<int> super_first_, super_parent_, struct_start_, struct_rows_, relative_;
+  int max_below_ = 0; // the most rows below a supernode
   std::vector<int> assembly_start_, assembly_source_, diagonal_source_;
   std::vector<std::size_t> assembly_position_, panel_start_;
   std::vector<double> L_, D_;
