@@ -70,15 +70,7 @@ public:
                const std::vector<Vertex_level>& levels, double s) const
   {
     Row row;
-    auto add = [&row](int var, const Vec3& d) {
-      auto it =
-          std::find_if(row.begin(), row.end(), [var](const auto& e) { return e.first == var; });
-      if (it == row.end())
-        row.emplace_back(var, d);
-      else
-        for (int k = 0; k < 3; ++k)
-          it->second[std::size_t(k)] += d[std::size_t(k)];
-    };
+    auto add = [&row](int var, const Vec3& d) { add_to_row(row, var, d); };
     if (node.vertex >= 0) { // eq. 13 for a node on a vertex: the vertex's new position
       const int var = region_.variable[std::size_t(node.vertex)];
       if (var >= 0)
@@ -112,6 +104,17 @@ public:
   }
 
 private:
+  // Adds d to the entry of variable var, appending one if there is none yet.
+  static void add_to_row(Row& row, int var, const Vec3& d)
+  {
+    auto it = std::find_if(row.begin(), row.end(), [var](const auto& e) { return e.first == var; });
+    if (it == row.end())
+      row.emplace_back(var, d);
+    else
+      for (int k = 0; k < 3; ++k)
+        it->second[std::size_t(k)] += d[std::size_t(k)];
+  }
+
   Vec3 point(int v) const
   {
     const double* p = xyz_ + 3 * std::size_t(v);
@@ -126,7 +129,7 @@ private:
   void compute_distance_gradient(int v, Distance_row& result) const
   {
     // dÑ/dx_k = sum over faces around v containing k of N_k x (p_next(k) - p_prev(k)).
-    std::vector<std::pair<int, Vec3>> dn;
+    Row dn;
     for (int i = region_.vertex_face_begin[std::size_t(v)];
          i < region_.vertex_face_begin[std::size_t(v) + 1]; ++i) {
       const std::array<int, 3>& c =
@@ -140,13 +143,7 @@ private:
         const Vec3 d =
             cross3(directions_[std::size_t(var)],
                    {p_next[0] - p_prev[0], p_next[1] - p_prev[1], p_next[2] - p_prev[2]});
-        auto it =
-            std::find_if(dn.begin(), dn.end(), [var](const auto& e) { return e.first == var; });
-        if (it == dn.end())
-          dn.emplace_back(var, d);
-        else
-          for (int k = 0; k < 3; ++k)
-            it->second[std::size_t(k)] += d[std::size_t(k)];
+        add_to_row(dn, var, d);
       }
     }
     const Vec3 p = point(v), n = normal(v);
