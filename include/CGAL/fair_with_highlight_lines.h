@@ -43,10 +43,12 @@ public:
 
   Face_region(FaceIndexMap fim, std::size_t index_bound) : fim_(fim), marked_(index_bound, 0) {}
 
+  std::size_t index(face_descriptor f) const { return std::size_t(get(fim_, f)); }
+
   // Requires a face of the mesh.
   bool insert(face_descriptor f)
   {
-    char& mark = marked_[std::size_t(get(fim_, f))];
+    char& mark = marked_[index(f)];
     if (mark)
       return false;
     mark = 1;
@@ -56,8 +58,8 @@ public:
   // 1 for a face of the mesh in the region, else 0.
   std::size_t count(face_descriptor f) const
   {
-    const std::size_t index = std::size_t(get(fim_, f));
-    return index < marked_.size() && marked_[index] ? 1 : 0;
+    const std::size_t i = index(f);
+    return i < marked_.size() && marked_[i] ? 1 : 0;
   }
   const_iterator begin() const { return faces_.begin(); } // in the order of insertion
   const_iterator end() const { return faces_.end(); }
@@ -110,16 +112,15 @@ Face_region<TriangleMesh, FaceIndexMap> checked_region(const TriangleMesh& tm,
   return region;
 }
 
-// The region (faces of `tm`) and `rings` rings of faces around it, by increasing face index:
-// where highlight lines are recomputed.
-template <typename TriangleMesh, typename FaceSet, typename FaceIndexMap>
+// The region and `rings` rings of faces around it, by increasing face index: where highlight
+// lines are recomputed.
+template <typename TriangleMesh, typename FaceIndexMap>
 std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>
-neighborhood(const TriangleMesh& tm, const FaceSet& region, int rings, FaceIndexMap fim)
+neighborhood(const TriangleMesh& tm, const Face_region<TriangleMesh, FaceIndexMap>& region,
+             int rings)
 {
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
-  Face_region<TriangleMesh, FaceIndexMap> result(fim, face_index_bound(tm, fim));
-  for (face_descriptor f : region)
-    result.insert(f);
+  Face_region<TriangleMesh, FaceIndexMap> result = region;
   std::vector<face_descriptor> front(result.begin(), result.end());
   for (int ring = 0; ring < rings; ++ring) {
     std::vector<face_descriptor> next;
@@ -132,7 +133,9 @@ neighborhood(const TriangleMesh& tm, const FaceSet& region, int rings, FaceIndex
   }
   std::vector<face_descriptor> faces_by_index(result.begin(), result.end());
   std::sort(faces_by_index.begin(), faces_by_index.end(),
-            [fim](face_descriptor a, face_descriptor b) { return get(fim, a) < get(fim, b); });
+            [&result](face_descriptor a, face_descriptor b) {
+              return result.index(a) < result.index(b);
+            });
   return faces_by_index;
 }
 
@@ -276,8 +279,7 @@ fair_with_highlight_lines(TriangleMesh& tm, const FaceRange& region,
     bad("neighborhood_rings must be at least 2 (tangents need two nodes outside the region)");
 
   const auto region_set = HL::internal::checked_region(tm, region, fim);
-  const auto neighborhood =
-      HL::internal::neighborhood(tm, region_set, options.neighborhood_rings, fim);
+  const auto neighborhood = HL::internal::neighborhood(tm, region_set, options.neighborhood_rings);
 
   HL::Active_set_box_QP_solver default_solver;
   auto& solver =

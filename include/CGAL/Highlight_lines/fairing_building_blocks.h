@@ -35,8 +35,8 @@ auto fairing_setup(const TriangleMesh& tm, const FaceRange& region,
   return std::make_unique<
       Fairing<TriangleMesh, Vertex_point_map, GeomTraits, Active_set_box_QP_solver>>(
       const_cast<TriangleMesh&>(tm), region_set,
-      neighborhood(tm, region_set, (std::max)(options.neighborhood_rings, 2), fim), vpm, lights,
-      options, unused_solver);
+      neighborhood(tm, region_set, (std::max)(options.neighborhood_rings, 2)), vpm, lights, options,
+      unused_solver);
 }
 } // namespace internal
 /// \endcond

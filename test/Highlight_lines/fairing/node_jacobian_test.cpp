@@ -33,8 +33,8 @@ TEST(NodeJacobian, MatchesFiniteDifferences)
     if (inside)
       region.insert(f);
   }
-  const auto neighborhood =
-      HL::internal::neighborhood(mesh, region, 3, get(CGAL::face_index, mesh));
+  const auto neighborhood = HL::internal::neighborhood(
+      mesh, HL::internal::checked_region(mesh, region, get(CGAL::face_index, mesh)), 3);
   const Lights lights(Point(0.2, 0.1, 2.5), Vector(1, 0.3, 0), Vector(0, 0, 1), 0.05);
   HL::internal::Fairing_options options;
   HL::Active_set_box_QP_solver solver;
