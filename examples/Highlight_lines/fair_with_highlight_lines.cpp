@@ -404,6 +404,10 @@ int main(int argc, char** argv)
               << " movable vertices, " << report.number_of_lines_targeted << " lines targeted ("
               << report.number_of_two_segment_targets << " two-segment), "
               << report.number_of_lines_without_target << " without target\n";
+    if (report.number_of_folded_triangles > 0 && o.energy == HL::Fairness_energy::WILLMORE)
+      std::cout << "note: " << report.number_of_folded_triangles
+                << " triangles of the region are folded; their tangential curvature dominates "
+                   "the Willmore energy: try --mean-curvature\n";
     if (!report.history.empty())
       std::cout << "target F = w1 q_fair + w2 q_diff: " << report.history.front().target_value
                 << " -> " << report.history.back().target_value << "\n";

@@ -68,6 +68,12 @@ struct Fairing_report
   /// OGH curve could not be made loop-free, their tangents are undefined, or the line ends
   /// inside the region (mesh border, pole, saddle) or is a loop inside it.
   std::size_t number_of_lines_without_target = 0;
+  /// Triangles of the region folded in the input mesh (their normal opposes the vertex
+  /// normals at their corners), as sliver triangles of a noisy triangulation can be. The
+  /// cotangent weights of a folded triangle give the Willmore energy a large tangential part
+  /// that `Fairness_energy::WILLMORE` lowers by bending the surface, at the expense of the
+  /// highlight lines: when this is not zero, prefer `Fairness_energy::MEAN_CURVATURE`.
+  std::size_t number_of_folded_triangles = 0;
   /// One entry per iteration, plus a last one with the energies of the final mesh (its step
   /// fields are zero).
   std::vector<Iteration> history;

@@ -166,6 +166,7 @@ TEST(Fairing, RestoresTheUndentedSurface)
   EXPECT_EQ(report.number_of_movable_vertices, movable.size());
   EXPECT_GT(report.number_of_lines_targeted, 5u);
   EXPECT_GE(report.iterations, 1u);
+  EXPECT_EQ(report.number_of_folded_triangles, 0u); // jitter 0.25 folds nothing
   std::cout << "RMS height error / dent depth: before " << before / d.depth << ", after "
             << after / d.depth << ", iterations " << report.iterations << ", converged "
             << report.converged() << "\n";
@@ -207,6 +208,8 @@ TEST(Fairing, MeanCurvatureEnergyIsNotDominatedBySlivers)
   EXPECT_TRUE(flipped_faces(input, mean_curvature).empty());
   // The report's q_fair is the energy chosen.
   EXPECT_LT(report.history.back().fairness_energy, report.history.front().fairness_energy);
+  // And it tells why the default energy failed here.
+  EXPECT_GT(report.number_of_folded_triangles, 0u);
 }
 
 TEST(Fairing, NothingOutsideTheMovableSupportChanges)

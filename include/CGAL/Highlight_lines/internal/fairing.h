@@ -211,6 +211,10 @@ public:
   {
     report.number_of_movable_vertices = region_.movable.size();
     compute_model();
+    report.number_of_folded_triangles = 0;
+    for (std::size_t f = 0; f < region_.face_in_region.size(); ++f)
+      if (region_.face_in_region[f] && is_folded(int(f)))
+        ++report.number_of_folded_triangles;
     desired_.clear();
     make_desired_lines(report);
   }
@@ -258,6 +262,18 @@ private:
     const Vec3 p0 = position(c[0]), p1 = position(c[1]), p2 = position(c[2]);
     return cross3({p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]},
                   {p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]});
+  }
+  // Whether the normal of face f opposes (or is orthogonal to) the sum of the unit vertex
+  // normals at its corners: a triangle folded over a neighbour.
+  bool is_folded(int f) const
+  {
+    Vec3 corner_normals{0, 0, 0};
+    for (int c : sweeper_.local_mesh().face_vertices[std::size_t(f)]) {
+      const Vec3 m = sweeper_.vertex_normals().unit_normal(c);
+      for (int k = 0; k < 3; ++k)
+        corner_normals[std::size_t(k)] += m[std::size_t(k)];
+    }
+    return !(dot3(face_cross(f), corner_normals) > 0);
   }
   double shortest_edge(int v) const
   {
@@ -509,17 +525,9 @@ private:
           step_faces_.push_back(region_.vertex_faces[std::size_t(i)]);
       std::sort(step_faces_.begin(), step_faces_.end());
       step_faces_.erase(std::unique(step_faces_.begin(), step_faces_.end()), step_faces_.end());
-      for (int f : step_faces_) {
-        const Vec3 n = face_cross(f);
-        Vec3 corner_normals{0, 0, 0};
-        for (int c : lm.face_vertices[std::size_t(f)]) {
-          const Vec3 m = sweeper_.vertex_normals().unit_normal(c);
-          for (int k = 0; k < 3; ++k)
-            corner_normals[std::size_t(k)] += m[std::size_t(k)];
-        }
-        // Zero for a folded triangle: then any non-degenerate orientation is accepted.
-        input_face_cross_.push_back(dot3(n, corner_normals) > 0 ? n : Vec3{0, 0, 0});
-      }
+      // Zero for a folded triangle: then any non-degenerate orientation is accepted.
+      for (int f : step_faces_)
+        input_face_cross_.push_back(is_folded(f) ? Vec3{0, 0, 0} : face_cross(f));
     }
     const std::vector<int>& faces = step_faces_;
     std::vector<Vec3> start(region_.movable.size());
