@@ -208,8 +208,14 @@ TEST(Fairing, MeanCurvatureEnergyIsNotDominatedBySlivers)
   EXPECT_TRUE(flipped_faces(input, mean_curvature).empty());
   // The report's q_fair is the energy chosen.
   EXPECT_LT(report.history.back().fairness_energy, report.history.front().fairness_energy);
-  // And it tells why the default energy failed here.
+  // And it tells why the default energy failed here, on a Polyhedron_3 too.
   EXPECT_GT(report.number_of_folded_triangles, 0u);
+  Polyhedron polyhedron = to_mesh<Polyhedron>(d.dented);
+  const HL::Fairing_report polyhedron_report = CGAL::fair_with_highlight_lines(
+      polyhedron, disk_region(polyhedron, 1.5 * d.radius), hood_lights,
+      HLP::fairness_energy(CGAL::parameters::number_of_iterations(1),
+                           HL::Fairness_energy::MEAN_CURVATURE));
+  EXPECT_EQ(polyhedron_report.number_of_folded_triangles, report.number_of_folded_triangles);
 }
 
 TEST(Fairing, NothingOutsideTheMovableSupportChanges)
