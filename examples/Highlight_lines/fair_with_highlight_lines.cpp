@@ -41,8 +41,8 @@ namespace {
 const char* usage =
     "usage: fair_with_highlight_lines [MESH] [options]\n"
     "\n"
-    "Shows where the highlight lines of a triangle mesh are irregular (PREFIX_irregularities.png)\n"
-    "and fairs a region so that the surface and its highlight lines become smooth: writes\n"
+    "Fairs a region of a triangle mesh so that the surface and its highlight lines become\n"
+    "smooth: writes\n"
     "PREFIX.png (before / after, close-up), PREFIX_faired.off and, when a dent was added,\n"
     "PREFIX_dented.off.\n"
     "MESH defaults to the bundled VW Beetle body, into whose roof a dent is pressed first.\n"
@@ -72,6 +72,9 @@ const char* usage =
     "                        the strongest) instead of the close-up; --center, --radius and\n"
     "                        --region then only place the dent\n"
     "  --max-regions N       with --detect: fair at most the N strongest regions (default: all)\n"
+    "  --show-irregularities also sweep the lights over the whole mesh and write\n"
+    "                        PREFIX_irregularities.png, the irregular regions tinted (done by\n"
+    "                        default only for the bundled beetle without --center/--region)\n"
     "  --size W H            picture size per panel (default 800 600)\n"
     "  --help                this text\n";
 
@@ -88,7 +91,7 @@ struct Options
   std::optional<K::Vector_3> base, direction, normal;
   std::string region_file;
   int lines = 12, iterations = 50, width = 800, height = 600;
-  bool detect = false;
+  bool detect = false, show_irregularities = false;
   HL::Fairness_energy energy = HL::Fairness_energy::WILLMORE;
   std::size_t max_regions = std::size_t(-1);
 };
@@ -121,6 +124,8 @@ Options parse(int argc, char** argv)
       o.lines = int(number(i, argc, argv));
     else if (a == "--detect")
       o.detect = true;
+    else if (a == "--show-irregularities")
+      o.show_irregularities = true;
     else if (a == "--mean-curvature")
       o.energy = HL::Fairness_energy::MEAN_CURVATURE;
     else if (a == "--max-regions") {
@@ -214,6 +219,33 @@ find_irregularities(const Mesh& mesh, const HL::Light_setup<K>& lights)
   return found;
 }
 
+// The light tunnel of the whole mesh, with the spacing refined so that about `lines` lights
+// cross the region.
+HL::Light_setup<K> region_light_tunnel(const Mesh& mesh, const std::vector<face_descriptor>& region,
+                                       int lines)
+{
+  const auto tunnel = HL::default_light_setup(mesh);
+  const auto across = HL::default_level_range(mesh, tunnel, HLP::face_range(region));
+  const double spacing = CGAL::to_double(tunnel.spacing()) *
+                         double((std::max)(across.second - across.first, 1LL)) / double(lines);
+  return HL::Light_setup<K>(tunnel.base_point(), tunnel.light_direction(), tunnel.plane_normal(),
+                            spacing);
+}
+
+// The lights drawn in the close-up: those over the region and as many again on each side.
+// Taken from the region, not the mesh: lights that face the region need not face the rest.
+std::pair<long long, long long> region_levels(const Mesh& mesh, const HL::Light_setup<K>& lights,
+                                              const std::vector<face_descriptor>& region)
+{
+  try {
+    const auto r = HL::default_level_range(mesh, lights, HLP::face_range(region));
+    const long long margin = (std::max)(r.second - r.first, 2LL);
+    return {r.first - margin, r.second + margin};
+  } catch (const HL::Invalid_input&) { // no vertex of the region faces the light plane
+    return {-1000, 1000};              // the model caps the levels per edge anyway
+  }
+}
+
 HL::Light_setup<K> sweep_lights(const Mesh& mesh, const Options& o)
 {
   return o.base ? HL::Light_setup<K>(CGAL::ORIGIN + *o.base, *o.direction, *o.normal, *o.spacing)
@@ -243,8 +275,8 @@ int detect_and_fair(Mesh& mesh, const Options& o)
           mesh, found[i].faces, lights,
           HLP::fairness_energy(CGAL::parameters::number_of_iterations(o.iterations), o.energy));
       ++repaired;
-      std::cout << (report.converged() ? "converged" : "stopped") << " after " << report.iterations
-                << " iterations, " << report.number_of_movable_vertices << " movable vertices\n";
+      std::cout << HL::to_string(report.status) << " after " << report.iterations << " iterations, "
+                << report.number_of_movable_vertices << " movable vertices\n";
     } catch (const HL::Invalid_input& e) {
       std::cout << "not faired: " << e.what() << "\n";
     } catch (const HL::Fairing_failure& e) {
@@ -329,21 +361,18 @@ int main(int argc, char** argv)
     }
     std::cout << "region: " << region.size() << " faces around " << center << "\n";
 
-    // The light tunnel of the whole mesh, with the spacing refined so that about o.lines
-    // lights cross the region: the close-up shows the lines' shape there.
-    // Explicit lights (--base --direction --normal --spacing) take precedence.
-    const auto tunnel = HL::default_light_setup(mesh);
-    const auto across = HL::default_level_range(mesh, tunnel, HLP::face_range(region));
-    const double spacing = CGAL::to_double(tunnel.spacing()) *
-                           double((std::max)(across.second - across.first, 1LL)) / double(o.lines);
+    if (region.empty())
+      fail("the region is empty: give a larger --radius or another --center");
+    // Explicit lights (--base --direction --normal --spacing) are used as given. Otherwise: the
+    // light tunnel of the whole mesh, with the spacing refined so that about o.lines lights
+    // cross the region (the close-up shows the lines' shape there).
     const HL::Light_setup<K> lights =
         o.base ? HL::Light_setup<K>(CGAL::ORIGIN + *o.base, *o.direction, *o.normal, *o.spacing)
-               : HL::Light_setup<K>(tunnel.base_point(), tunnel.light_direction(),
-                                    tunnel.plane_normal(), spacing);
+               : region_light_tunnel(mesh, region, o.lines);
     std::cout << "lights: base " << lights.base_point() << ", direction "
               << lights.light_direction() << ", plane normal " << lights.plane_normal()
               << ", spacing " << lights.spacing() << "\n";
-    const auto levels = HL::default_level_range(mesh, lights);
+    const auto levels = region_levels(mesh, lights, region);
 
     // The dent: a smooth bump (1 - (r/R)^2)^3 pressed along the normals, inside the region.
     const double dent = o.dent ? *o.dent : (o.default_mesh ? 0.006 * diagonal : 0.0);
@@ -370,8 +399,8 @@ int main(int argc, char** argv)
       return detect_and_fair(mesh, o);
 
     // Where the highlight lines are irregular, over the whole mesh (the user's region is faired
-    // below; --detect fairs these instead).
-    {
+    // below; --detect fairs these instead): in the demo on the bundled mesh, or when asked.
+    if (o.show_irregularities || (o.default_mesh && o.region_file.empty() && !o.center)) {
       const HL::Light_setup<K> sweep = sweep_lights(mesh, o);
       std::vector<std::vector<face_descriptor>> regions;
       for (const auto& r : find_irregularities(mesh, sweep))
@@ -390,7 +419,10 @@ int main(int argc, char** argv)
     auto progress = [](const HL::Fairing_report::Iteration& it) {
       std::cout << "  iteration: q_fair " << it.fairness_energy << ", q_diff "
                 << it.difference_energy << ", max |x| / mean edge " << it.relative_max_displacement
-                << ", lines targeted " << it.lines_targeted << "\n";
+                << ", lines targeted " << it.lines_targeted;
+      if (it.restrained_vertices > 0)
+        std::cout << ", " << it.restrained_vertices << " vertices held back against flips";
+      std::cout << "\n";
       return true;
     };
     const HL::Fairing_report report = CGAL::fair_with_highlight_lines(
@@ -399,15 +431,23 @@ int main(int argc, char** argv)
                      HLP::fairing_visitor(progress), HLP::fairness_energy(o.energy)));
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::cout << (report.converged() ? "converged" : "stopped") << " after " << report.iterations
-              << " iterations in " << seconds << " s; " << report.number_of_movable_vertices
-              << " movable vertices, " << report.number_of_lines_targeted << " lines targeted ("
+    std::size_t restrained = 0;
+    for (const auto& it : report.history)
+      restrained = (std::max)(restrained, it.restrained_vertices);
+    std::cout << HL::to_string(report.status) << " after " << report.iterations << " iterations in "
+              << seconds << " s; " << report.number_of_movable_vertices << " movable vertices, "
+              << report.number_of_lines_targeted << " lines targeted ("
               << report.number_of_two_segment_targets << " two-segment), "
               << report.number_of_lines_without_target << " without target\n";
     if (report.number_of_folded_triangles > 0 && o.energy == HL::Fairness_energy::WILLMORE)
       std::cout << "note: " << report.number_of_folded_triangles
                 << " triangles of the region are folded; their tangential curvature dominates "
                    "the Willmore energy: try --mean-curvature\n";
+    if (restrained > 0)
+      std::cout << "up to " << restrained << " vertices per step were held back where moving "
+                << "them would have flipped a triangle\n";
+    if (report.returned_best_iterate)
+      std::cout << "the mesh is the iterate of lowest F, not the last one\n";
     if (!report.history.empty())
       std::cout << "target F = w1 q_fair + w2 q_diff: " << report.history.front().target_value
                 << " -> " << report.history.back().target_value << "\n";

@@ -152,10 +152,24 @@ specification).
 Only the movable vertices of the region move, each along its normal (see below); everything
 outside their support is left exactly as it was, in particular every vertex outside the region
 with its normal, and every highlight node outside the region. Each iteration minimises
-`F = ω1 q_fair + ω2 q_diff` (eq. 15) under `|x_i| <= ½ min edge length at V_i` (eq. 16) with a
-bound-constrained QP solver, moves the vertices, and recomputes the highlight lines around the
-region; it stops when `max |x_i| / ē < ε` (eq. 17, `ē` the mean edge length in the region) or
-after the iteration bound.
+`F = ω1 q_fair + ω2 q_diff` (eq. 15) under bounds `|x_i| <= r_i` with a bound-constrained QP
+solver, moves the vertices without flipping a face, and recomputes the highlight lines around
+the region; it stops when the step's `max |x_i| / ē < ε` (eq. 17, `ē` the mean edge length in
+the region) or after the iteration bound.
+
+- *Step control*: `r_i` is a trust radius per vertex. It starts at eq. 16's bound, half the
+  shortest edge at `V_i`, doubles where a vertex used its whole bound and the step lowered `F`
+  by at least 3/4 of what the program predicted, and halves where `F` fell by less than 1/4 of
+  it; it stays between 1/1024 of eq. 16's bound and four times it plus `ē`.
+- *No flips*: a face *flips* when its normal turns by more than 90° from its normal in the
+  input mesh, or when it degenerates; a face already folded in the input (its normal opposes
+  the sum of its corners' vertex normals) only has to stay non-degenerate. Where a step would
+  flip faces, only the vertices of those faces are held back (their bounds are tightened and
+  the program solved again; failing that, their displacements are scaled down, down to zero):
+  one bad triangle never stops the others. The report counts the vertices held back.
+- *Stalls are not failures*: if the iteration bound is reached, or two steps in a row cannot
+  move any vertex, the fairing stops and leaves the mesh at the iterate of lowest `F`, with the
+  report's status saying why (`ITERATION_LIMIT`, `STEP_BLOCKED`).
 
 - *Inside the region*: a vertex is inside when all its faces are in the region and it is not
   on a mesh border; a highlight node is inside when it lies inside an edge whose two faces are
@@ -218,8 +232,8 @@ before the call} \cgalParamDefault{`false`} \cgalParamNEnd
 \throws Highlight_lines::Invalid_input for an empty region, a face not of `tm`, a region
 without movable vertex, a non-triangle or degenerate face or a non-finite coordinate around
 the region, or an invalid parameter; the mesh is untouched.
-\throws Highlight_lines::Fairing_failure if the solver fails or no step avoids flipping a
-triangle; the mesh is restored to exactly what it was before the call (or, with
+\throws Highlight_lines::Fairing_failure if the solver reports a failure (other than its
+iteration limit); the mesh is restored to exactly what it was before the call (or, with
 `keep_completed_iterations(true)`, to what it was after the last completed iteration). Any
 exception thrown by the visitor or the property maps restores the mesh in the same way before it
 propagates.

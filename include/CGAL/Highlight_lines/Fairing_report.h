@@ -23,9 +23,15 @@ struct Fairing_report
 {
   /// How the iteration ended.
   enum class Status {
-    CONVERGED,         ///< the largest displacement fell below ε times the mean edge length
-    ITERATION_LIMIT,   ///< the iteration bound was reached first
-    STOPPED_BY_VISITOR ///< the visitor asked to stop
+    /// the largest displacement of a step fell below ε times the mean edge length (eq. 17)
+    CONVERGED,
+    /// the iteration bound was reached first; the mesh is the iterate of lowest `F`
+    ITERATION_LIMIT,
+    /// the visitor asked to stop; the mesh is the last iterate
+    STOPPED_BY_VISITOR,
+    /// two steps in a row could not move any vertex without flipping a face; the mesh is the
+    /// iterate of lowest `F`
+    STEP_BLOCKED
   };
 
   /// One iteration (§3.7): the energies of the current mesh when the iteration started, then
@@ -39,14 +45,22 @@ struct Fairing_report
     double difference_energy = 0;
     /// `F = ω1 q_fair + ω2 q_diff` (eq. 15).
     double target_value = 0;
-    /// Largest |x_i| of the QP's solution.
+    /// Largest |x_i| of the step taken.
     double max_displacement = 0;
     /// `max_displacement` divided by the mean edge length in the region: the quantity of the
     /// convergence test (eq. 17).
     double relative_max_displacement = 0;
-    /// The fraction of the solution actually applied: 1, or less where the full step would
-    /// have flipped a triangle (then the iteration does not count as converged).
+    /// 1 when the step taken is the solution of a program; otherwise the smallest fraction of
+    /// its displacement a vertex was given, where moving it further would have flipped a face
+    /// (then the iteration does not count as converged).
     double step_scale = 1;
+    /// Movable vertices held back because the program's solution would have flipped a face
+    /// around them (a face whose normal turns by more than 90° from its input normal): their
+    /// bounds were tightened and the program solved again, or their displacement was scaled
+    /// down. The other vertices move as solved.
+    std::size_t restrained_vertices = 0;
+    /// Programs solved again with tightened bounds in this iteration.
+    std::size_t resolves = 0;
     /// Line pieces whose desired curve was found in the current highlight lines.
     std::size_t lines_targeted = 0;
     /// How the QP solver ended, with its iteration count and KKT residual.
@@ -74,9 +88,12 @@ struct Fairing_report
   /// that `Fairness_energy::WILLMORE` lowers by bending the surface, at the expense of the
   /// highlight lines: when this is not zero, prefer `Fairness_energy::MEAN_CURVATURE`.
   std::size_t number_of_folded_triangles = 0;
-  /// One entry per iteration, plus a last one with the energies of the final mesh (its step
+  /// One entry per iteration, plus a last one with the energies of the mesh returned (its step
   /// fields are zero).
   std::vector<Iteration> history;
+  /// Whether the mesh returned is an earlier iterate than the last, because the fairing stopped
+  /// short of convergence (`ITERATION_LIMIT` or `STEP_BLOCKED`) after a step that raised `F`.
+  bool returned_best_iterate = false;
 
   /// Whether the iteration converged.
   bool converged() const { return status == Status::CONVERGED; }
@@ -85,10 +102,31 @@ struct Fairing_report
 /*!
 \ingroup PkgHighlightLinesRef
 
-Thrown by `fair_with_highlight_lines()` when an iteration cannot be completed (the QP solver
-reports a failure other than reaching its iteration limit, or no step avoids flipping a
-triangle). The mesh is restored to exactly what it was before the call: the iterations listed
-in `report()`, carried out before the failure, are undone too.
+The name of a fairing status, e.g. `"STEP_BLOCKED"`.
+*/
+inline const char* to_string(Fairing_report::Status status)
+{
+  switch (status) {
+  case Fairing_report::Status::CONVERGED:
+    return "CONVERGED";
+  case Fairing_report::Status::ITERATION_LIMIT:
+    return "ITERATION_LIMIT";
+  case Fairing_report::Status::STOPPED_BY_VISITOR:
+    return "STOPPED_BY_VISITOR";
+  case Fairing_report::Status::STEP_BLOCKED:
+    return "STEP_BLOCKED";
+  }
+  return "UNKNOWN";
+}
+
+/*!
+\ingroup PkgHighlightLinesRef
+
+Thrown by `fair_with_highlight_lines()` when an iteration cannot be completed: the QP solver
+reports a failure other than reaching its iteration limit (a stall in which no vertex can move
+without flipping a face is not a failure: see `Fairing_report::Status::STEP_BLOCKED`). The mesh is
+restored to exactly what it was before the call: the iterations listed in `report()`, carried out
+before the failure, are undone too.
 */
 class Fairing_failure : public std::runtime_error
 {

@@ -10,6 +10,8 @@
 #include <CGAL/Highlight_lines/Invalid_input.h>
 #include <CGAL/Highlight_lines/Light_setup.h>
 #include <CGAL/Highlight_lines/internal/desired_highlight_lines.h>
+#include <CGAL/Highlight_lines/internal/difference_energy.h>
+#include <CGAL/Highlight_lines/internal/flip_guard.h>
 #include <CGAL/Highlight_lines/internal/fairing_region.h>
 #include <CGAL/Highlight_lines/internal/node_jacobian.h>
 #include <CGAL/Highlight_lines/internal/ogh_curve.h>
@@ -17,29 +19,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <set>
+#include <limits>
 #include <string>
 #include <vector>
 
 namespace CGAL {
 namespace Highlight_lines {
 namespace internal {
-
-// A desired highlight line (§3.2): the fixed OGH curve between two delimiting nodes.
-struct Desired_line
-{
-  Node_key start, end;
-  Ogh_target curve;
-};
-
-// One line piece of the current model matched to its desired line, with the data of q_diff.
-struct Matched_piece
-{
-  std::vector<int> nodes;      // canonical ids, Q0 .. Q1
-  std::vector<Vec3> targets;   // eq. 12, for the inner nodes
-  std::vector<double> weights; // eq. 14, for the inner nodes
-};
 
 // The arc length of line, in mean edge lengths, over which end tangents are fitted.
 constexpr double tangent_reach_in_edges = 3;
@@ -108,74 +94,29 @@ public:
                               "scale the mesh and the light setup towards unit size");
   }
 
+  // §3.7: assemble the program of the current mesh, bound the step, solve, take the step
+  // without flipping a face, recompute the highlight lines; until the step is small.
   Fairing_report run(const std::function<bool(const Fairing_report::Iteration&)>& visitor)
   {
     Fairing_report report;
     make_targets(report);
-
+    start_step_control();
+    std::size_t blocked_in_a_row = 0;
     for (std::size_t iteration = 0;; ++iteration) {
       take_checkpoint();
       Fairing_report::Iteration step;
-      const std::size_t n = region_.movable.size();
-      solver_.resize(n);
       const std::vector<Vec3> directions = movable_normals();
-
-      const double w1 = options_.fairness_weight;
-      const double w2 =
-          options_.difference_weight / (length_scale_ * length_scale_ * length_scale_);
-      // q_fair: the Willmore energy with frozen weights, an exact quadratic in x.
-      double trace = 0;
-      step.fairness_energy = add_fairness_terms(directions, w1, trace);
-      solver_.set_r(w1 * step.fairness_energy);
-      // q_diff: Gauss–Newton form over the matched line pieces.
-      std::vector<Matched_piece> pieces = match_desired_lines();
-      step.lines_targeted = pieces.size();
-      step.difference_energy = add_difference_terms(pieces, directions, w2);
-      // Q is positive semidefinite in exact arithmetic but can be singular (e.g. on regular
-      // grids); rounding then leaves tiny negative pivots. A relative 1e-10 on the diagonal makes
-      // the program strictly convex and changes the solution negligibly.
-      trace += difference_trace_;
-      const double regularization = 1e-10 * trace / double((std::max)(n, std::size_t(1)));
-      if (regularization > 0 && std::isfinite(regularization))
-        for (std::size_t i = 0; i < n; ++i)
-          solver_.set_P(i, i, regularization);
-      step.target_value =
-          w1 * step.fairness_energy + options_.difference_weight * step.difference_energy;
+      assemble_program(directions, step);
+      keep_if_best(step.target_value);
+      adapt_trust_region(step.target_value);
       if (iteration >= options_.max_iterations) {
         report.status = Fairing_report::Status::ITERATION_LIMIT;
         report.history.push_back(step);
         break;
       }
-
-      // Eq. 16: |x_i| <= half the shortest edge at V_i.
-      for (std::size_t i = 0; i < n; ++i) {
-        const double bound = 0.5 * shortest_edge(region_.movable[i]);
-        solver_.set_l(i, -bound);
-        solver_.set_u(i, bound);
-      }
-      std::vector<double> x(n, 0.0);
-      // Successive programs are alike: start from the previous solution and its active set.
-      if (previous_solution_.size() == n)
-        solver_.set_warm_start(previous_solution_);
-      step.solver = solver_.solve(x.begin());
-      // A solver that ran out of iterations still returns a feasible, improved point: use it.
-      const bool usable =
-          step.solver.is_optimal() ||
-          (step.solver.status == Box_QP_status::ITERATION_LIMIT &&
-           std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); }));
-      if (!usable) {
-        report.history.push_back(step);
-        throw Fairing_failure("fair_with_highlight_lines(): the QP solver failed at iteration " +
-                                  std::to_string(iteration + 1) + ": " + step.solver.message,
-                              report);
-      }
-      previous_solution_ = x;
-      step.step_scale = move_without_flips(x, directions, report);
-      double max_x = 0;
-      for (double xi : x)
-        max_x = (std::max)(max_x, std::abs(xi));
-      step.max_displacement = max_x; // of the QP solution; the move applied is step_scale times it
-      step.relative_max_displacement = max_x / mean_edge_length_;
+      set_step_bounds();
+      std::vector<double> x = solve_program(step, iteration, report);
+      take_step(x, directions, step);
       report.history.push_back(step);
       sweeper_.update_positions();
       compute_model();
@@ -185,24 +126,19 @@ public:
         report.status = Fairing_report::Status::STOPPED_BY_VISITOR;
         break;
       }
-      // Eq. 17 on the solution itself: a step shortened against a flip is no convergence.
-      if (step.step_scale == 1 && step.relative_max_displacement < options_.convergence_threshold) {
+      if (converged(step)) {
         report.status = Fairing_report::Status::CONVERGED;
         break;
       }
+      blocked_in_a_row = step.max_displacement == 0 ? blocked_in_a_row + 1 : 0;
+      if (blocked_in_a_row == 2) {
+        report.status = Fairing_report::Status::STEP_BLOCKED;
+        break;
+      }
     }
-    // The energies of the final mesh.
-    if (report.status != Fairing_report::Status::ITERATION_LIMIT) {
-      Fairing_report::Iteration last;
-      const std::vector<Vec3> directions = movable_normals();
-      last.fairness_energy = fairness_value();
-      std::vector<Matched_piece> pieces = match_desired_lines();
-      last.lines_targeted = pieces.size();
-      last.difference_energy = difference_value(pieces);
-      last.target_value = options_.fairness_weight * last.fairness_energy +
-                          options_.difference_weight * last.difference_energy;
-      report.history.push_back(last);
-    }
+    if (report.status != Fairing_report::Status::ITERATION_LIMIT)
+      report.history.push_back(current_energies());
+    return_best_iterate(report);
     return report;
   }
 
@@ -336,134 +272,6 @@ private:
     report.number_of_lines_targeted = desired_.size();
   }
 
-  // Finds each desired line's piece in the current model (its delimiting nodes lie outside R
-  // and never move) and computes the targets of its inner nodes (eq. 12) and their weights
-  // (eq. 14).
-  std::vector<Matched_piece> match_desired_lines() const
-  {
-    // key -> (line, position); a node where lines meet (degree > 2) is in several lines
-    std::multimap<Node_key, std::pair<std::size_t, std::size_t>> where;
-    std::set<Node_key> wanted;
-    for (const Desired_line& d : desired_)
-      wanted.insert(d.start);
-    const auto& lines = model_.lines.lines;
-    for (std::size_t l = 0; l < lines.size(); ++l)
-      for (std::size_t i = 0; i < lines[l].nodes.size(); ++i) {
-        const Node_key key = Node_key::of(model_.node(std::size_t(lines[l].nodes[i])));
-        if (wanted.count(key))
-          where.emplace(key, std::make_pair(l, i));
-      }
-    // The piece from position `start` of `line` to the node d.end through nodes inside R.
-    auto walk = [&](const Desired_line& d, const Traced_line& line, std::size_t start,
-                    int direction, Matched_piece& piece) {
-      const long long n = (long long)line.nodes.size();
-      piece.nodes.assign(1, line.nodes[start]);
-      for (long long k = 1; k <= n; ++k) {
-        long long pos = (long long)start + direction * k;
-        if (line.closed)
-          pos = ((pos % n) + n) % n;
-        else if (pos < 0 || pos >= n)
-          return false;
-        const int id = line.nodes[std::size_t(pos)];
-        piece.nodes.push_back(id);
-        const Raw_node& node = model_.node(std::size_t(id));
-        if (Node_key::of(node) == d.end)
-          return piece.nodes.size() > 2;
-        if (!node_is_inside(node, region_))
-          return false;
-      }
-      return false;
-    };
-    std::vector<Matched_piece> matched;
-    for (const Desired_line& d : desired_) {
-      const auto occurrences = where.equal_range(d.start);
-      bool done = false;
-      for (auto it = occurrences.first; it != occurrences.second && !done; ++it)
-        for (int direction : {1, -1}) {
-          Matched_piece piece;
-          if (walk(d, lines[it->second.first], it->second.second, direction, piece)) {
-            complete_piece(d, piece);
-            matched.push_back(std::move(piece));
-            done = true;
-            break;
-          }
-        }
-    }
-    return matched;
-  }
-
-  void complete_piece(const Desired_line& d, Matched_piece& piece) const
-  {
-    std::vector<Vec3> p;
-    for (int id : piece.nodes)
-      p.push_back(node_point(id));
-    std::vector<double> chord(p.size(), 0.0);
-    for (std::size_t i = 1; i < p.size(); ++i) {
-      const Vec3 e{p[i][0] - p[i - 1][0], p[i][1] - p[i - 1][1], p[i][2] - p[i - 1][2]};
-      chord[i] = chord[i - 1] + std::sqrt(dot3(e, e));
-    }
-    const double total = chord.back() > 0 ? chord.back() : 1;
-    for (std::size_t i = 1; i + 1 < p.size(); ++i) {
-      piece.targets.push_back(d.curve.point_at_arc_length_fraction(chord[i] / total));
-      piece.weights.push_back(0.5 * (chord[i + 1] - chord[i - 1]));
-    }
-  }
-
-  double difference_value(const std::vector<Matched_piece>& pieces) const
-  {
-    double value = 0;
-    for (const Matched_piece& piece : pieces)
-      for (std::size_t i = 0; i < piece.targets.size(); ++i) {
-        const Vec3 q = node_point(piece.nodes[i + 1]);
-        const Vec3 e{q[0] - piece.targets[i][0], q[1] - piece.targets[i][1],
-                     q[2] - piece.targets[i][2]};
-        value += piece.weights[i] * dot3(e, e);
-      }
-    return value / (length_scale_ * length_scale_ * length_scale_);
-  }
-
-  // Adds w · Σ l_i ‖Q_i + J_i x − Q̃_i‖² to the solver; returns q_diff at x = 0.
-  double add_difference_terms(const std::vector<Matched_piece>& pieces,
-                              const std::vector<Vec3>& directions, double w)
-  {
-    const Node_jacobian J = jacobian(directions);
-    const auto& lm = sweeper_.local_mesh();
-    difference_trace_ = 0;
-    for (const Matched_piece& piece : pieces)
-      for (std::size_t i = 0; i < piece.targets.size(); ++i) {
-        const Raw_node& node = model_.node(std::size_t(piece.nodes[i + 1]));
-        // On an edge almost along a highlight line (its d values differ by a small fraction of
-        // the spacing), eq. 13 moves the node by many edge lengths for a small change of d: its
-        // linearisation means nothing there, and it would swamp the program. Such nodes still
-        // shape the chord-length parameters, but get no term.
-        if (node.edge >= 0) {
-          const auto& ends = lm.edge_vertices[std::size_t(node.edge)];
-          const double D = model_.levels[std::size_t(ends[1])].distance -
-                           model_.levels[std::size_t(ends[0])].distance;
-          if (!(std::abs(D) >= 0.1 * lights_.spacing_value()))
-            continue;
-        }
-        const Node_jacobian::Row row =
-            J.node_row(node, lm.edge_vertices, model_.levels, lights_.spacing_value());
-        const Vec3 q = node_point(piece.nodes[i + 1]);
-        const Vec3 r{q[0] - piece.targets[i][0], q[1] - piece.targets[i][1],
-                     q[2] - piece.targets[i][2]};
-        const double l = piece.weights[i];
-        // The solver's set_P() adds: one call per pair and node, duplicates summed there.
-        for (const auto& a : row) {
-          solver_.set_q(std::size_t(a.first), 2 * w * l * dot3(a.second, r));
-          for (const auto& b : row)
-            if (a.first <= b.first) {
-              const double value = 2 * w * l * dot3(a.second, b.second);
-              solver_.set_P(std::size_t(a.first), std::size_t(b.first), value);
-              if (a.first == b.first)
-                difference_trace_ += value;
-            }
-        }
-      }
-    return difference_value(pieces);
-  }
-
   std::vector<Vec3> local_points() const
   {
     std::vector<Vec3> points(sweeper_.local_mesh().vertex_handles.size());
@@ -509,62 +317,270 @@ private:
         options_.fairness_energy == Fairness_energy::MEAN_CURVATURE ? &energy_normals() : nullptr);
   }
 
-  // Moves the movable vertices by x_i N_i, halving the step while a triangle would flip or
-  // degenerate. Flips are judged against the input mesh, not the start of the step: steps that
-  // each turn a triangle by less than 90 degrees can add up to a flip. A triangle folded in the
-  // input (its normal opposed to the sum of its corners' unit vertex normals) may unfold; it
-  // must only stay non-degenerate. Returns the scale applied.
-  double move_without_flips(const std::vector<double>& x, const std::vector<Vec3>& directions,
-                            Fairing_report& report)
-  {
-    const auto& lm = sweeper_.local_mesh();
-    if (step_faces_.empty()) { // the first step: the mesh and its normals are still the input's
-      for (int v : region_.movable)
-        for (int i = region_.vertex_face_begin[std::size_t(v)];
-             i < region_.vertex_face_begin[std::size_t(v) + 1]; ++i)
-          step_faces_.push_back(region_.vertex_faces[std::size_t(i)]);
-      std::sort(step_faces_.begin(), step_faces_.end());
-      step_faces_.erase(std::unique(step_faces_.begin(), step_faces_.end()), step_faces_.end());
-      // Zero for a folded triangle: then any non-degenerate orientation is accepted.
-      for (int f : step_faces_)
-        input_face_cross_.push_back(is_folded(f) ? Vec3{0, 0, 0} : face_cross(f));
-    }
-    const std::vector<int>& faces = step_faces_;
-    std::vector<Vec3> start(region_.movable.size());
-    for (std::size_t i = 0; i < region_.movable.size(); ++i)
-      start[i] = position(region_.movable[i]);
+  // ---------------------------------------------------------------------------------------
+  // The steps of one iteration (§3.6-3.7)
 
-    double scale = 1;
-    for (int attempt = 0; attempt < 12; ++attempt, scale *= 0.5) {
-      std::vector<Vec3> moved(lm.vertex_handles.size());
-      for (std::size_t v = 0; v < moved.size(); ++v)
-        moved[v] = position(int(v));
-      for (std::size_t i = 0; i < region_.movable.size(); ++i)
-        for (int k = 0; k < 3; ++k)
-          moved[std::size_t(region_.movable[i])][std::size_t(k)] =
-              start[i][std::size_t(k)] + scale * x[i] * directions[i][std::size_t(k)];
-      bool ok = true;
-      for (std::size_t j = 0; j < faces.size() && ok; ++j) {
-        const auto& c = lm.face_vertices[std::size_t(faces[j])];
-        const Vec3& p0 = moved[std::size_t(c[0])];
-        const Vec3& p1 = moved[std::size_t(c[1])];
-        const Vec3& p2 = moved[std::size_t(c[2])];
-        const Vec3 n = cross3({p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]},
-                              {p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]});
-        const Vec3& reference = input_face_cross_[j];
-        ok = reference == Vec3{0, 0, 0} ? dot3(n, n) > 0 : dot3(n, reference) > 0;
-      }
-      if (!ok)
-        continue;
-      for (std::size_t i = 0; i < region_.movable.size(); ++i) {
-        const Vec3& p = moved[std::size_t(region_.movable[i])];
-        put(vpm_, lm.vertex_handles[std::size_t(region_.movable[i])], Point(p[0], p[1], p[2]));
-      }
-      return scale;
+  // F = ω1 q_fair + ω2 q_diff (eq. 15) as a quadratic in x, handed to the solver; the
+  // energies of the current mesh in `step`. The constant is F at x = 0, so that the solver's
+  // objective value is the decrease of F the program predicts.
+  void assemble_program(const std::vector<Vec3>& directions, Fairing_report::Iteration& step)
+  {
+    const std::size_t n = region_.movable.size();
+    solver_.resize(n);
+    const double w1 = options_.fairness_weight;
+    const double w2 = options_.difference_weight / (length_scale_ * length_scale_ * length_scale_);
+    // q_fair: the Willmore energy with frozen weights, an exact quadratic in x.
+    double trace = 0;
+    step.fairness_energy = add_fairness_terms(directions, w1, trace);
+    // q_diff: Gauss–Newton form over the matched line pieces.
+    const std::vector<Matched_piece> pieces = match_desired_lines(model_, region_, desired_);
+    step.lines_targeted = pieces.size();
+    // The solver's set_P() adds: one call per pair and node, duplicates summed there.
+    trace += add_difference_quadratic(
+        model_, pieces, jacobian(directions), sweeper_.local_mesh().edge_vertices,
+        lights_.spacing_value(), w2,
+        [this](int a, int b, double v) { solver_.set_P(std::size_t(a), std::size_t(b), v); },
+        [this](int a, double v) { solver_.set_q(std::size_t(a), v); });
+    step.difference_energy = difference_energy(model_, pieces, length_scale_);
+    // Q is positive semidefinite in exact arithmetic but can be singular (e.g. on regular
+    // grids); rounding then leaves tiny negative pivots. A relative 1e-10 on the diagonal makes
+    // the program strictly convex and changes the solution negligibly.
+    const double regularization = 1e-10 * trace / double((std::max)(n, std::size_t(1)));
+    if (regularization > 0 && std::isfinite(regularization))
+      for (std::size_t i = 0; i < n; ++i)
+        solver_.set_P(i, i, regularization);
+    step.target_value =
+        w1 * step.fairness_energy + options_.difference_weight * step.difference_energy;
+    solver_.set_r(step.target_value);
+  }
+
+  // The trust region: |x_i| <= r_i. It starts at eq. 16's bound, half the shortest edge at
+  // V_i; it grows where a vertex used its whole bound and the step lowered F about as much as
+  // the program predicted, and shrinks where it did not (see adapt_trust_region()).
+  void start_step_control()
+  {
+    const std::size_t n = region_.movable.size();
+    radius_.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+      radius_[i] = 0.5 * shortest_edge(region_.movable[i]);
+    restrained_.assign(n, 0);
+    applied_.assign(n, 0.0);
+    predicted_decrease_ = std::numeric_limits<double>::quiet_NaN();
+    // The faces a step can change, with their input normals (zero where folded in the input).
+    std::vector<int> faces;
+    for (int v : region_.movable)
+      for (int i = region_.vertex_face_begin[std::size_t(v)];
+           i < region_.vertex_face_begin[std::size_t(v) + 1]; ++i)
+        faces.push_back(region_.vertex_faces[std::size_t(i)]);
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    std::vector<std::array<int, 3>> corners;
+    std::vector<Vec3> input_cross;
+    for (int f : faces) {
+      corners.push_back(sweeper_.local_mesh().face_vertices[std::size_t(f)]);
+      input_cross.push_back(is_folded(f) ? Vec3{0, 0, 0} : face_cross(f));
     }
-    throw Fairing_failure("fair_with_highlight_lines(): every step, down to 1/2048 of the "
-                          "solver's, would flip a triangle",
-                          report);
+    flip_guard_ = Flip_guard(std::move(corners), std::move(input_cross));
+  }
+
+  // The ratio test of trust-region methods, per vertex: ρ = (actual decrease of F) /
+  // (decrease predicted by the last program). Vertices held back against a flip keep the
+  // bound they were held at.
+  void adapt_trust_region(double value)
+  {
+    const double actual = previous_value_ - value;
+    const double rho = actual / predicted_decrease_;
+    previous_value_ = value;
+    if (!(predicted_decrease_ > 0) || !std::isfinite(rho))
+      return;
+    for (std::size_t i = 0; i < radius_.size(); ++i) {
+      if (restrained_[i])
+        continue;
+      if (rho < 0.25)
+        radius_[i] *= 0.5;
+      else if (rho > 0.75 && std::abs(applied_[i]) >= 0.99 * radius_[i])
+        radius_[i] *= 2;
+    }
+  }
+
+  // |x_i| <= r_i, within [2^-10, 4] times eq. 16's bound at the current mesh: beyond a few
+  // edge lengths the linearisation of the nodes means little; the floor lets a vertex that
+  // was held back move again.
+  void set_step_bounds()
+  {
+    for (std::size_t i = 0; i < radius_.size(); ++i) {
+      const double eq16 = 0.5 * shortest_edge(region_.movable[i]);
+      radius_[i] = (std::min)((std::max)(radius_[i], eq16 / 1024), 4 * eq16 + mean_edge_length_);
+      solver_.set_l(i, -radius_[i]);
+      solver_.set_u(i, radius_[i]);
+    }
+  }
+
+  // Solves the program; a solver that ran out of iterations still returns a feasible, improved
+  // point, which is used. Any other failure throws.
+  std::vector<double> solve_program(Fairing_report::Iteration& step, std::size_t iteration,
+                                    Fairing_report& report)
+  {
+    std::vector<double> x(region_.movable.size(), 0.0);
+    // Successive programs are alike: start from the previous solution and its active set.
+    if (previous_solution_.size() == x.size())
+      solver_.set_warm_start(previous_solution_);
+    step.solver = solver_.solve(x.begin());
+    if (!usable(step.solver, x)) {
+      report.history.push_back(step);
+      throw Fairing_failure("fair_with_highlight_lines(): the QP solver failed at iteration " +
+                                std::to_string(iteration + 1) + ": " + step.solver.message,
+                            report);
+    }
+    previous_solution_ = x;
+    step.max_displacement = max_abs(x);
+    return x;
+  }
+
+  static bool usable(const Box_QP_report& solved, const std::vector<double>& x)
+  {
+    return (solved.is_optimal() || solved.status == Box_QP_status::ITERATION_LIMIT) &&
+           std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); });
+  }
+
+  static double max_abs(const std::vector<double>& x)
+  {
+    double m = 0;
+    for (double v : x)
+      m = (std::max)(m, std::abs(v));
+    return m;
+  }
+
+  // Moves the movable vertices by x_i N_i without flipping a face (flip_guard.h). Where the
+  // solution would flip faces, only the vertices of those faces are held back: their bounds
+  // are tightened to half their displacement and the program is solved again (the other
+  // vertices adapt), up to three times; what still flips then is scaled down vertex by vertex,
+  // down to not moving at all (the current mesh never flips). Everything else moves as solved.
+  void take_step(std::vector<double>& x, const std::vector<Vec3>& directions,
+                 Fairing_report::Iteration& step)
+  {
+    const std::size_t n = x.size();
+    const std::vector<Vec3> start = local_points();
+    std::vector<Vec3> moved = start;
+    auto place = [&](std::size_t i, double xi) {
+      const std::size_t v = std::size_t(region_.movable[i]);
+      for (int k = 0; k < 3; ++k)
+        moved[v][std::size_t(k)] = start[v][std::size_t(k)] + xi * directions[i][std::size_t(k)];
+    };
+    for (std::size_t i = 0; i < n; ++i)
+      place(i, x[i]);
+    std::vector<std::size_t> flipped;
+    flip_guard_.flipped_faces(moved, flipped);
+    restrained_.assign(n, 0);
+    // Held back by a tighter bound, then solved again.
+    for (int resolve = 0; resolve < 3 && !flipped.empty(); ++resolve) {
+      for (std::size_t j : flipped)
+        for (int c : flip_guard_.corners(j)) {
+          const int i = region_.variable[std::size_t(c)];
+          if (i < 0 || x[std::size_t(i)] == 0)
+            continue;
+          restrained_[std::size_t(i)] = 1;
+          radius_[std::size_t(i)] = 0.5 * std::abs(x[std::size_t(i)]);
+          solver_.set_l(std::size_t(i), -radius_[std::size_t(i)]);
+          solver_.set_u(std::size_t(i), radius_[std::size_t(i)]);
+        }
+      std::vector<double> again(n, 0.0);
+      solver_.set_warm_start(x);
+      const Box_QP_report solved = solver_.solve(again.begin());
+      ++step.resolves;
+      if (!usable(solved, again))
+        break; // keep x and scale it below
+      step.solver = solved;
+      x.swap(again);
+      for (std::size_t i = 0; i < n; ++i)
+        place(i, x[i]);
+      flip_guard_.flipped_faces(moved, flipped);
+    }
+    // Scaled down vertex by vertex: halved up to ten times, then not moved.
+    std::vector<double> scale(n, 1.0);
+    std::vector<int> scaled_in_round(n, -1);
+    for (int round = 0; !flipped.empty(); ++round) {
+      for (std::size_t j : flipped)
+        for (int c : flip_guard_.corners(j)) {
+          const int i = region_.variable[std::size_t(c)];
+          if (i < 0 || scale[std::size_t(i)] == 0 || scaled_in_round[std::size_t(i)] == round)
+            continue;
+          scaled_in_round[std::size_t(i)] = round;
+          restrained_[std::size_t(i)] = 1;
+          scale[std::size_t(i)] = round < 10 ? 0.5 * scale[std::size_t(i)] : 0.0;
+          place(std::size_t(i), scale[std::size_t(i)] * x[std::size_t(i)]);
+        }
+      flip_guard_.flipped_faces(moved, flipped);
+    }
+    step.step_scale = 1;
+    for (std::size_t i = 0; i < n; ++i) {
+      x[i] *= scale[i];
+      step.step_scale = (std::min)(step.step_scale, scale[i]);
+      if (restrained_[i]) {
+        ++step.restrained_vertices;
+        // Held at what it could take, but free to move again later.
+        radius_[i] = std::abs(x[i]);
+      }
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec3& p = moved[std::size_t(region_.movable[i])];
+      put(vpm_, sweeper_.local_mesh().vertex_handles[std::size_t(region_.movable[i])],
+          Point(p[0], p[1], p[2]));
+    }
+    applied_ = x;
+    step.max_displacement = max_abs(x);
+    step.relative_max_displacement = step.max_displacement / mean_edge_length_;
+    // The program predicts the decrease of F for its own solution: not for a scaled one.
+    predicted_decrease_ = step.step_scale == 1 ? step.target_value - step.solver.objective_value
+                                               : std::numeric_limits<double>::quiet_NaN();
+  }
+
+  // Eq. 17 on the step taken, provided it is the program's solution (not scaled against a
+  // flip).
+  bool converged(const Fairing_report::Iteration& step) const
+  {
+    return step.step_scale == 1 && step.relative_max_displacement < options_.convergence_threshold;
+  }
+
+  // ---------------------------------------------------------------------------------------
+  // The best iterate
+
+  void keep_if_best(double value)
+  {
+    if (value < best_value_) {
+      best_value_ = value;
+      best_points_ = checkpoint_;
+    }
+  }
+
+  // The energies of the current mesh, as a last history entry.
+  Fairing_report::Iteration current_energies()
+  {
+    Fairing_report::Iteration last;
+    last.fairness_energy = fairness_value();
+    const std::vector<Matched_piece> pieces = match_desired_lines(model_, region_, desired_);
+    last.lines_targeted = pieces.size();
+    last.difference_energy = difference_energy(model_, pieces, length_scale_);
+    last.target_value = options_.fairness_weight * last.fairness_energy +
+                        options_.difference_weight * last.difference_energy;
+    return last;
+  }
+
+  // A fairing that stopped short of convergence returns the iterate of lowest F, not
+  // necessarily the last one.
+  void return_best_iterate(Fairing_report& report)
+  {
+    if (report.status != Fairing_report::Status::ITERATION_LIMIT &&
+        report.status != Fairing_report::Status::STEP_BLOCKED)
+      return;
+    if (report.history.empty() || !(best_value_ < report.history.back().target_value))
+      return;
+    for (const auto& entry : best_points_)
+      put(vpm_, entry.first, entry.second);
+    sweeper_.update_positions();
+    compute_model();
+    report.history.back() = current_energies();
+    report.returned_best_iterate = true;
   }
 
   TriangleMesh& tm_;
@@ -579,9 +595,14 @@ private:
   std::vector<std::pair<vertex_descriptor, Point>> checkpoint_;
   std::vector<double> previous_solution_;
   std::vector<Vec3> energy_normals_;
-  std::vector<int> step_faces_;        // the faces around movable vertices
-  std::vector<Vec3> input_face_cross_; // their input cross products, zero where folded
-  double difference_trace_ = 0;        // trace of the q_diff part of the last program
+  Flip_guard flip_guard_;
+  std::vector<double> radius_;   // trust radius of each movable vertex
+  std::vector<char> restrained_; // held back against a flip in the last step
+  std::vector<double> applied_;  // the last step taken
+  double predicted_decrease_ = std::numeric_limits<double>::quiet_NaN();
+  double previous_value_ = std::numeric_limits<double>::quiet_NaN();
+  double best_value_ = std::numeric_limits<double>::infinity();
+  std::vector<std::pair<vertex_descriptor, Point>> best_points_;
   double mean_edge_length_ = 1, length_scale_ = 1;
 };
 

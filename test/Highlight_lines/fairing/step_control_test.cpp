@@ -1,0 +1,255 @@
+// The fairing's step control: flips are judged against the input and held back locally, a
+// stall returns the best iterate with a status instead of throwing, and the trust region lets
+// deep dents converge within the iteration bound.
+#include "../flipped_faces.h"
+#include "../model/test_meshes.h"
+
+#include <CGAL/Highlight_lines/fairing_building_blocks.h>
+#include <CGAL/Highlight_lines/internal/flip_guard.h>
+#include <CGAL/fair_with_highlight_lines.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+#include <vector>
+
+namespace {
+using namespace test;
+namespace HL = CGAL::Highlight_lines;
+namespace HLP = CGAL::Highlight_lines::parameters;
+typedef Surface_mesh::Face_index Face;
+typedef Surface_mesh::Vertex_index Vertex;
+
+double hood(double x, double y)
+{
+  return 0.25 * (1 - 0.35 * x * x) - 0.12 * y * y + 0.05 * x * y;
+}
+
+// A hood (n x n grid over [-1, 1]^2, jittered) with a smooth dent of `depth` around the origin.
+Surface_mesh dented_hood(int n, double depth, double jitter = 0.25)
+{
+  Soup soup = grid(n, 2.0 / n, -1, -1, hood, jitter, 17);
+  for (Point& p : soup.points) {
+    const double r2 = (p.x() * p.x() + p.y() * p.y()) / 0.09;
+    if (r2 < 1)
+      p = Point(p.x(), p.y(), p.z() - depth * (1 - r2) * (1 - r2) * (1 - r2));
+  }
+  return to_mesh<Surface_mesh>(soup);
+}
+
+std::vector<Face> faces_within(const Surface_mesh& mesh, double radius)
+{
+  std::vector<Face> region;
+  for (Face f : mesh.faces()) {
+    bool inside = true;
+    for (Vertex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      inside =
+          inside && mesh.point(v).x() * mesh.point(v).x() + mesh.point(v).y() * mesh.point(v).y() <
+                        radius * radius;
+    if (inside)
+      region.push_back(f);
+  }
+  return region;
+}
+
+const Lights lights_above(Point(0, 0, 3), Vector(1, 0, 0), Vector(0, 0, 1), 0.06);
+
+// Wraps the built-in solver and replaces some of its solutions, to provoke what the step control
+// must handle.
+struct Meddling_solver
+{
+  HL::Active_set_box_QP_solver inner;
+  int calls = 0;
+  std::function<void(int call, std::vector<double>& x)> meddle;
+  std::size_t n = 0;
+  void resize(std::size_t size)
+  {
+    n = size;
+    inner.resize(size);
+  }
+  void set_P(std::size_t i, std::size_t j, double v) { inner.set_P(i, j, v); }
+  void set_q(std::size_t i, double v) { inner.set_q(i, v); }
+  void set_r(double v) { inner.set_r(v); }
+  void set_l(std::size_t i, double v) { inner.set_l(i, v); }
+  void set_u(std::size_t i, double v) { inner.set_u(i, v); }
+  void set_warm_start(const std::vector<double>& x0) { inner.set_warm_start(x0); }
+  template <typename OutputIterator>
+  HL::Box_QP_report solve(OutputIterator out)
+  {
+    std::vector<double> x(n);
+    HL::Box_QP_report report = inner.solve(x.begin());
+    meddle(++calls, x);
+    std::copy(x.begin(), x.end(), out);
+    return report;
+  }
+};
+
+std::size_t flips(const Surface_mesh& before, const Surface_mesh& after)
+{
+  return flipped_faces(before, after).size();
+}
+
+std::vector<Point> points_of(const Surface_mesh& mesh)
+{
+  std::vector<Point> points;
+  for (Vertex v : mesh.vertices())
+    points.push_back(mesh.point(v));
+  return points;
+}
+
+// The flip rule itself: a face flips when its normal turns by more than 90 degrees from its
+// input normal, or degenerates; a face folded in the input only must not degenerate.
+TEST(FlipGuard, FlipIsATurnOfMoreThanARightAngleFromTheInput)
+{
+  using HL::internal::Vec3;
+  const std::vector<std::array<int, 3>> faces = {{0, 1, 2}, {0, 1, 2}};
+  const Vec3 up{0, 0, 1}, none{0, 0, 0};
+  const HL::internal::Flip_guard guard(faces, {up, none}); // face 1: folded in the input
+  auto with_apex = [](double x, double y, double z) {
+    return std::vector<Vec3>{{0, 0, 0}, {1, 0, 0}, {x, y, z}};
+  };
+  // Tilted by less than 90 degrees: not a flip; by more: a flip; degenerate: a flip.
+  EXPECT_FALSE(guard.flips(0, with_apex(0, 1, 0)));
+  EXPECT_FALSE(guard.flips(0, with_apex(0, 0.1, 5))); // normal (0, -5, 0.1): 88.9 degrees
+  EXPECT_TRUE(guard.flips(0, with_apex(0, -0.1, 5))); // 91.1 degrees
+  EXPECT_TRUE(guard.flips(0, with_apex(0, -1, 0)));   // upside down
+  EXPECT_TRUE(guard.flips(0, with_apex(2, 0, 0)));    // collinear
+  EXPECT_FALSE(guard.flips(1, with_apex(0, -1, 0)));  // folded: any orientation
+  EXPECT_TRUE(guard.flips(1, with_apex(2, 0, 0)));    // but not degenerate
+  std::vector<std::size_t> flipped;
+  guard.flipped_faces(with_apex(0, -1, 0), flipped);
+  EXPECT_EQ(flipped, std::vector<std::size_t>{0});
+}
+
+// One vertex whose solved displacement would flip its faces is held back alone: the others
+// move, and the fairing ends as without the disturbance.
+TEST(StepControl, AFlippingVertexHoldsBackOnlyItsNeighbourhood)
+{
+  const Surface_mesh input = dented_hood(24, 0.02);
+  const auto region = faces_within(input, 0.5);
+  Surface_mesh reference = input;
+  const auto clean = CGAL::fair_with_highlight_lines(reference, region, lights_above);
+  ASSERT_TRUE(clean.converged());
+
+  // The first solution sends one vertex 100 region sizes along its normal: its faces flip.
+  Meddling_solver solver;
+  std::size_t disturbed = 0;
+  solver.meddle = [&](int call, std::vector<double>& x) {
+    if (call == 1) {
+      disturbed = x.size() / 2;
+      x[disturbed] = 100.0;
+    }
+  };
+  Surface_mesh mesh = input;
+  const auto report =
+      CGAL::fair_with_highlight_lines(mesh, region, lights_above, HLP::qp_solver(std::ref(solver)));
+  EXPECT_EQ(flips(input, mesh), 0u);
+  EXPECT_TRUE(report.converged()) << HL::to_string(report.status);
+  ASSERT_FALSE(report.history.empty());
+  const auto& first = report.history.front();
+  EXPECT_GE(first.resolves, 1u);
+  EXPECT_GE(first.restrained_vertices, 1u);
+  EXPECT_LE(first.restrained_vertices, 12u); // the vertex and a few neighbours, not everyone
+  EXPECT_EQ(first.step_scale, 1.0);          // held back by a re-solve, not by scaling
+  EXPECT_GT(first.max_displacement, 0);
+  // The disturbance cost nothing in the end: the same surface, up to the solver's tolerance.
+  const std::vector<Point> a = points_of(mesh), b = points_of(reference);
+  double largest = 0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    largest = (std::max)(largest, std::sqrt(CGAL::squared_distance(a[i], b[i])));
+  EXPECT_LT(largest, 1e-3);
+}
+
+// The faces of the two rings around the vertex nearest to the origin: its only movable vertex.
+std::vector<Face> two_rings(const Surface_mesh& mesh)
+{
+  Vertex centre = *mesh.vertices().begin();
+  for (Vertex v : mesh.vertices())
+    if (CGAL::squared_distance(mesh.point(v), Point(0, 0, mesh.point(v).z())) <
+        CGAL::squared_distance(mesh.point(centre), Point(0, 0, mesh.point(centre).z())))
+      centre = v;
+  std::set<Face> faces;
+  for (Vertex w : CGAL::vertices_around_target(mesh.halfedge(centre), mesh))
+    for (Face f : CGAL::faces_around_target(mesh.halfedge(w), mesh))
+      faces.insert(f);
+  return std::vector<Face>(faces.begin(), faces.end());
+}
+
+// A solver whose every solution after the first iteration sends the only movable vertex a
+// million region sizes along its normal (on this convex hood, that drags a face around it over,
+// at every scale the step control tries): the fairing stops with STEP_BLOCKED instead of
+// throwing, and keeps the first iteration's progress. (Sent the other way, the vertex would
+// make a spike, whose faces turn by less than 90 degrees: no flip.)
+TEST(StepControl, ABlockedStepReturnsTheBestIterate)
+{
+  const Surface_mesh input = dented_hood(24, 0.02);
+  const auto region = two_rings(input);
+  std::vector<Vertex> movable;
+  HL::movable_vertices(input, region, std::back_inserter(movable));
+  ASSERT_EQ(movable.size(), 1u);
+  Surface_mesh after_one = input;
+  const auto one = CGAL::fair_with_highlight_lines(after_one, region, lights_above,
+                                                   CGAL::parameters::number_of_iterations(1));
+  const bool first_step_helped = one.history.back().target_value < one.history.front().target_value;
+
+  for (double direction : {1.0}) {
+    Meddling_solver solver;
+    solver.meddle = [direction](int call, std::vector<double>& x) {
+      if (call > 1)
+        x[0] = direction * 1e6;
+    };
+    Surface_mesh mesh = input;
+    HL::Fairing_report report;
+    ASSERT_NO_THROW(report = CGAL::fair_with_highlight_lines(mesh, region, lights_above,
+                                                             HLP::qp_solver(std::ref(solver))));
+    EXPECT_EQ(report.status, HL::Fairing_report::Status::STEP_BLOCKED)
+        << HL::to_string(report.status);
+    EXPECT_EQ(report.iterations, 3u); // one step, then two blocked ones
+    EXPECT_EQ(flips(input, mesh), 0u);
+    EXPECT_EQ(points_of(mesh), points_of(first_step_helped ? after_one : input));
+    for (const auto& step : report.history)
+      EXPECT_LE(report.history.back().target_value, step.target_value);
+  }
+}
+
+// Whatever stops the iteration short of convergence, the mesh returned is the iterate of lowest
+// target value F.
+TEST(StepControl, ANonConvergedFairingReturnsTheIterateOfLowestF)
+{
+  const Surface_mesh input = dented_hood(24, 0.05);
+  const auto region = faces_within(input, 0.5);
+  for (int bound = 1; bound <= 4; ++bound) {
+    Surface_mesh mesh = input;
+    const auto report = CGAL::fair_with_highlight_lines(
+        mesh, region, lights_above, CGAL::parameters::number_of_iterations(bound));
+    if (report.converged())
+      continue;
+    EXPECT_EQ(report.status, HL::Fairing_report::Status::ITERATION_LIMIT);
+    for (const auto& step : report.history)
+      EXPECT_LE(report.history.back().target_value, step.target_value) << "bound " << bound;
+  }
+}
+
+// A dent several grid steps deep, wider than the bound of eq. 16 lets a vertex move in one
+// iteration: the fairing converges within the default iteration bound, without flips.
+TEST(StepControl, ADeepDentConvergesWithinTheIterationBound)
+{
+  const int n = 40;
+  const double step = 2.0 / n;
+  for (double depth : {1.0, 2.5}) {
+    const Surface_mesh input = dented_hood(n, depth * step);
+    const auto region = faces_within(input, 0.6);
+    Surface_mesh mesh = input;
+    const auto report = CGAL::fair_with_highlight_lines(mesh, region, lights_above);
+    EXPECT_TRUE(report.converged())
+        << HL::to_string(report.status) << " after " << report.iterations;
+    EXPECT_LE(report.iterations, 25u);
+    EXPECT_EQ(flips(input, mesh), 0u);
+    EXPECT_LT(report.history.back().target_value, 0.2 * report.history.front().target_value);
+  }
+}
+
+} // namespace
