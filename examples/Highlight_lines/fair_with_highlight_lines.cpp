@@ -443,6 +443,10 @@ int main(int argc, char** argv)
       std::cout << "note: " << report.number_of_folded_triangles
                 << " triangles of the region are folded; their tangential curvature dominates "
                    "the Willmore energy: try --mean-curvature\n";
+    else if (report.number_of_sliver_triangles > 0 && o.energy == HL::Fairness_energy::WILLMORE)
+      std::cout << "note: " << report.number_of_sliver_triangles
+                << " triangles of the region have a corner below 5 degrees; if the faired "
+                   "surface bends away from its surroundings, try --mean-curvature\n";
     if (restrained > 0)
       std::cout << "up to " << restrained << " vertices per step were held back where moving "
                 << "them would have flipped a triangle\n";

@@ -88,6 +88,11 @@ struct Fairing_report
   /// that `Fairness_energy::WILLMORE` lowers by bending the surface, at the expense of the
   /// highlight lines: when this is not zero, prefer `Fairness_energy::MEAN_CURVATURE`.
   std::size_t number_of_folded_triangles = 0;
+  /// Triangles of the region with a corner below 5 degrees (needles and caps, as scans and
+  /// remeshed CAD leave them): their cotangent weights (above 11) dominate the Willmore energy
+  /// as folded ones do, if less violently. When this is not zero and the faired surface bends
+  /// away from its surroundings, try `Fairness_energy::MEAN_CURVATURE`.
+  std::size_t number_of_sliver_triangles = 0;
   /// One entry per iteration, plus a last one with the energies of the mesh returned (its step
   /// fields are zero).
   std::vector<Iteration> history;

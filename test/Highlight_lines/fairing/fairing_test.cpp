@@ -167,6 +167,7 @@ TEST(Fairing, RestoresTheUndentedSurface)
   EXPECT_GT(report.number_of_lines_targeted, 5u);
   EXPECT_GE(report.iterations, 1u);
   EXPECT_EQ(report.number_of_folded_triangles, 0u); // jitter 0.25 folds nothing
+  EXPECT_EQ(report.number_of_sliver_triangles, 0u); // nor makes a corner below 5 degrees
   std::cout << "RMS height error / dent depth: before " << before / d.depth << ", after "
             << after / d.depth << ", iterations " << report.iterations << ", converged "
             << report.converged() << "\n";
@@ -216,6 +217,9 @@ TEST(Fairing, MeanCurvatureEnergyIsNotDominatedBySlivers)
       HLP::fairness_energy(CGAL::parameters::number_of_iterations(1),
                            HL::Fairness_energy::MEAN_CURVATURE));
   EXPECT_EQ(polyhedron_report.number_of_folded_triangles, report.number_of_folded_triangles);
+  EXPECT_EQ(polyhedron_report.number_of_sliver_triangles, report.number_of_sliver_triangles);
+  // Jitter that strong leaves needles too.
+  EXPECT_GE(report.number_of_sliver_triangles, 1u);
 }
 
 TEST(Fairing, NothingOutsideTheMovableSupportChanges)

@@ -148,9 +148,12 @@ public:
     report.number_of_movable_vertices = region_.movable.size();
     compute_model();
     report.number_of_folded_triangles = 0;
+    report.number_of_sliver_triangles = 0;
     for (std::size_t f = 0; f < region_.face_in_region.size(); ++f)
-      if (region_.face_in_region[f] && is_folded(int(f)))
-        ++report.number_of_folded_triangles;
+      if (region_.face_in_region[f]) {
+        report.number_of_folded_triangles += is_folded(int(f)) ? 1 : 0;
+        report.number_of_sliver_triangles += smallest_angle(int(f)) < sliver_angle ? 1 : 0;
+      }
     desired_.clear();
     make_desired_lines(report);
   }
@@ -211,6 +214,22 @@ private:
     }
     return !(dot3(face_cross(f), corner_normals) > 0);
   }
+  // The smallest corner angle of face f, in radians.
+  double smallest_angle(int f) const
+  {
+    const auto& c = sweeper_.local_mesh().face_vertices[std::size_t(f)];
+    double smallest = 4;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 p = position(c[std::size_t(k)]), a = position(c[std::size_t((k + 1) % 3)]),
+                 b = position(c[std::size_t((k + 2) % 3)]);
+      const Vec3 u{a[0] - p[0], a[1] - p[1], a[2] - p[2]}, w{b[0] - p[0], b[1] - p[1], b[2] - p[2]};
+      const Vec3 n = cross3(u, w);
+      smallest = (std::min)(smallest, std::atan2(std::sqrt(dot3(n, n)), dot3(u, w)));
+    }
+    return smallest;
+  }
+  static constexpr double sliver_angle = 5 * 3.14159265358979323846 / 180;
+
   double shortest_edge(int v) const
   {
     double shortest = std::numeric_limits<double>::infinity();
