@@ -1,0 +1,493 @@
+// Fairing dents pressed into smooth patches of real meshes: fair_with_highlight_lines() against
+// CGAL::Polygon_mesh_processing::fair() and the surface diffusion flow of Xu et al., on the
+// same regions, moving the same vertices.
+//
+//   benchmark_real_dents [--table] [--seed N] [--centres N] [--repetitions N] [--mesh STEM]
+//                        [--dump DIR]
+//
+// The table mode is the only mode (`--table` is accepted and is the default): one Markdown
+// table per case, then two summary tables (one row per method): over all the cases, and over
+// the cases of smooth patches only. No Google Benchmark: each case is small
+// and the timing is a median of `--repetitions` (3) runs of each method with
+// std::chrono::steady_clock, as a ratio to PMP::fair's median on the same case in the same run.
+//
+// Cases (real_dent_cases.h): for every mesh of HIGHLIGHT_LINES_SHARED_DATA_DIR (beetle, bunny,
+// camelhead, fandisk, rocker-arm, spot; missing files are skipped with a message), up to
+// `--centres` (3) centres drawn with the fixed seed (`--seed`, 2026), each dented to depths 1 ē
+// and 0.3 ē; the region is the faces within 8 ē of the centre, the lights cross it with about
+// 10 lines. The centres are in smooth patches (largest dihedral <= 25°, face normals within 45°
+// of the lights' normal) where the mesh has them; a mesh with fewer is filled up with its
+// smoothest rough patches (face normals within 75°), so that every mesh gives cases. The case
+// header says which (`patch smooth` / `patch rough`), and so does the `patches` column of the
+// summaries. `--dump DIR` writes each case's dented and undented mesh
+// (DIR/<case>_input.off, DIR/<case>_truth.off) and region (DIR/<case>_region.txt, face
+// indices).
+//
+// Methods, each on a fresh copy of the dented mesh:
+//   pmp_fair  CGAL::Polygon_mesh_processing::fair(mesh, movable vertices), default parameters
+//             (bi-Laplacian, cotangent weights; continuity 1)
+//   xu_flow   surface_diffusion_flow.h with its default options (as benchmark_fairing.cpp)
+//   ours      CGAL::fair_with_highlight_lines(mesh, region, lights), default parameters
+//   ours_mc   the same with fairness_energy(Fairness_energy::MEAN_CURVATURE)
+// The movable vertices are HL::movable_vertices() of the region (fair_with_highlight_lines()'s
+// definition).
+//
+// Columns:
+//   produced   whether the method produced a mesh; if not, the reason (the exception's what():
+//              HL::Invalid_input, HL::Fairing_failure or another std::exception, or PMP::fair
+//              returning false)
+//   status     ours: HL::to_string(report.status) (CONVERGED, ITERATION_LIMIT, STEP_BLOCKED,
+//              ...); conv: report.converged(), xu_flow: its convergence flag; pmp_fair: its
+//              return value
+//   iters      iterations (pmp_fair: 1)
+//   rms/depth  RMS distance of the movable vertices to the undented surface / dent depth
+//              (fairing_quality.h); the `input` row is the dented input (doing nothing)
+//   dev/ē      RMS distance of the highlight nodes inside the region to the undented surface's
+//              lines of the same light (deviation_from_reference), in ē
+//   willmore   discrete Willmore energy of the region (Σ A‖K‖², fairing_quality.h)
+//   flips      faces whose normal turned by more than 90° from the dented input
+//   outside    vertices outside the movable set that moved (bit-exact comparison)
+//   ms, x pmp  median time of the method and its ratio to PMP::fair's median
+#include "fairing_quality.h"
+#include "real_dent_cases.h"
+#include "surface_diffusion_flow.h"
+
+#include <CGAL/Highlight_lines/fairing_building_blocks.h>
+#include <CGAL/Polygon_mesh_processing/fair.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/fair_with_highlight_lines.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace {
+typedef Highlight_lines_benchmark::Dent_mesh Mesh;
+typedef Mesh::Vertex_index vertex_descriptor;
+namespace HL = CGAL::Highlight_lines;
+namespace HLP = CGAL::Highlight_lines::parameters;
+namespace HB = Highlight_lines_benchmark;
+
+enum Method { PMP_FAIR, XU_FLOW, OURS, OURS_MEAN_CURVATURE, NUMBER_OF_METHODS };
+const char* method_names[] = {"pmp_fair", "xu_flow", "ours", "ours_mc"};
+
+struct Options
+{
+  std::uint32_t seed = 2026;
+  std::size_t centres = 3;
+  int repetitions = 3;
+  std::string only_mesh, dump_dir;
+};
+
+// One method (or the input / truth) on one case.
+struct Outcome
+{
+  bool produced = false;
+  std::string reason;
+  bool converged = false;
+  std::string status; // ours only
+  std::size_t iterations = 0;
+  double seconds = 0, x_pmp = 0; // medians; x_pmp <= 0: not available
+  double rms_depth = 0, line_deviation = 0, willmore = 0;
+  std::size_t flips = 0, outside_moved = 0;
+};
+
+struct Run
+{
+  bool produced = true;
+  std::string reason;
+  bool converged = false;
+  std::string status;
+  std::size_t iterations = 0;
+};
+
+Run run_method(Method method, const HB::Real_dent_case& c,
+               const std::vector<vertex_descriptor>& movable, Mesh& mesh)
+{
+  Run run;
+  switch (method) {
+  case PMP_FAIR:
+    run.iterations = 1;
+    run.converged = CGAL::Polygon_mesh_processing::fair(mesh, movable);
+    if (!run.converged) {
+      run.produced = false;
+      run.reason = "PMP::fair returned false";
+    }
+    break;
+  case XU_FLOW: {
+    const HB::Surface_diffusion_flow_report r = HB::surface_diffusion_flow(mesh, c.region);
+    run.iterations = r.iterations;
+    run.converged = r.converged;
+    break;
+  }
+  default: {
+    const HL::Fairing_report r = CGAL::fair_with_highlight_lines(
+        mesh, c.region, c.lights,
+        HLP::fairness_energy(method == OURS ? HL::Fairness_energy::WILLMORE
+                                            : HL::Fairness_energy::MEAN_CURVATURE));
+    run.iterations = r.iterations;
+    run.status = HL::to_string(r.status);
+    run.converged = r.converged();
+    break;
+  }
+  }
+  return run;
+}
+
+double median(std::vector<double> v)
+{
+  if (v.empty())
+    return std::nan("");
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+void measure(Outcome& o, const HB::Real_dent_case& c, const HB::Region_info<Mesh>& info,
+             const std::vector<vertex_descriptor>& movable, const Mesh& mesh)
+{
+  o.rms_depth = HB::rms_distance_to_surface(mesh, c.truth, info) / c.dent_depth;
+  o.line_deviation =
+      HB::deviation_from_reference(mesh, c.truth, info, c.lights).rms / c.mean_edge_length;
+  o.willmore = HB::willmore_energy_in_region(mesh, info);
+  o.flips = HB::count_flipped_faces(mesh, c.input);
+  o.outside_moved = HB::count_moved_vertices_outside(mesh, c.input, movable);
+}
+
+// Runs `method` `repetitions` times on fresh copies of the dented mesh (stopping at the first
+// failure) and measures the last result.
+Outcome evaluate(Method method, const HB::Real_dent_case& c, const HB::Region_info<Mesh>& info,
+                 const std::vector<vertex_descriptor>& movable, const std::string& movable_error,
+                 int repetitions)
+{
+  Outcome o;
+  if (method == PMP_FAIR && !movable_error.empty()) {
+    o.reason = "no movable vertices: " + movable_error;
+    return o;
+  }
+  std::vector<double> times;
+  Mesh result;
+  Run run;
+  for (int rep = 0; rep < repetitions; ++rep) {
+    Mesh mesh = c.input;
+    try {
+      const auto start = std::chrono::steady_clock::now();
+      run = run_method(method, c, movable, mesh);
+      times.push_back(
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    } catch (const HL::Invalid_input& e) {
+      run = Run();
+      run.produced = false;
+      run.reason = std::string("Invalid_input: ") + e.what();
+    } catch (const HL::Fairing_failure& e) {
+      run = Run();
+      run.produced = false;
+      run.reason = "Fairing_failure (after " + std::to_string(e.report().iterations) +
+                   " iterations): " + e.what();
+    } catch (const std::exception& e) {
+      run = Run();
+      run.produced = false;
+      run.reason = std::string("exception: ") + e.what();
+    }
+    if (!run.produced)
+      break;
+    result = std::move(mesh);
+  }
+  o.produced = run.produced;
+  o.reason = run.reason;
+  o.converged = run.converged;
+  o.status = run.status;
+  o.iterations = run.iterations;
+  if (!o.produced)
+    return o;
+  o.seconds = median(times);
+  measure(o, c, info, movable, result);
+  return o;
+}
+
+std::string fixed(double x, int digits)
+{
+  if (!std::isfinite(x))
+    return "-";
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*f", digits, x);
+  return buffer;
+}
+
+std::string general(double x)
+{
+  if (!std::isfinite(x))
+    return "-";
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.4g", x);
+  return buffer;
+}
+
+// Markdown cells must not contain '|' or new lines.
+std::string cell(std::string s)
+{
+  for (char& ch : s)
+    if (ch == '|' || ch == '\n')
+      ch = ch == '|' ? '/' : ' ';
+  return s;
+}
+
+struct Summary
+{
+  std::size_t cases = 0, produced = 0, converged = 0, flips = 0, outside = 0;
+  std::vector<double> iterations, rms_depth, line_deviation, x_pmp;
+};
+
+void print_case(std::ostream& out, const HB::Real_dent_case& c, const HB::Region_info<Mesh>& info,
+                const std::vector<vertex_descriptor>& movable, const std::string& movable_error,
+                const Outcome& input, const Outcome& truth, const std::vector<Outcome>& outcomes)
+{
+  const double e = c.mean_edge_length;
+  // Dented vertices that no method may move, and the largest of their displacements.
+  std::size_t dented_not_movable = 0;
+  double largest_fixed_displacement = 0;
+  for (vertex_descriptor v : c.dented_vertices)
+    if (std::find(movable.begin(), movable.end(), v) == movable.end()) {
+      ++dented_not_movable;
+      largest_fixed_displacement =
+          (std::max)(largest_fixed_displacement,
+                     std::sqrt(CGAL::squared_distance(c.input.point(v), c.truth.point(v))));
+    }
+  std::set<long long> levels;
+  std::string levels_text;
+  try {
+    levels = HB::levels_in_region(c.truth, c.region, c.lights);
+    levels_text = std::to_string(levels.size()) +
+                  (levels.empty() ? std::string()
+                                  : " (" + std::to_string(*levels.begin()) + " to " +
+                                        std::to_string(*levels.rbegin()) + ")");
+  } catch (const std::exception& ex) {
+    levels_text = std::string("error: ") + ex.what();
+  }
+  out << "\n### " << c.name << "\n\n"
+      << num_vertices(c.input) << " vertices; centre v" << std::size_t(c.centre) << "; region "
+      << c.region.size() << " faces, radius " << fixed(c.region_radius / e, 2) << " ē, "
+      << movable.size() << " movable vertices"
+      << (movable_error.empty() ? std::string() : " (movable_vertices(): " + movable_error + ")")
+      << (movable.size() == info.movable.size()
+              ? std::string()
+              : " (fairing_quality.h counts " + std::to_string(info.movable.size()) + ")")
+      << "; " << c.dented_vertices.size() << " dented vertices, " << dented_not_movable
+      << " of them not movable"
+      << (dented_not_movable > 0
+              ? " (displaced by at most " + fixed(largest_fixed_displacement / c.dent_depth, 4) +
+                    " depth)"
+              : std::string())
+      << "; ē = " << general(e) << ", depth " << fixed(c.dent_depth / e, 2) << " ē; patch "
+      << (c.smooth ? "smooth" : "rough") << ": largest dihedral "
+      << fixed(c.max_dihedral_degrees, 1) << "°, largest normal angle "
+      << fixed(c.max_normal_angle_degrees, 1) << "°; light spacing "
+      << fixed(CGAL::to_double(c.lights.spacing()) / e, 2) << " ē, light levels in the region "
+      << levels_text << "\n\n";
+  out << "| method | produced | status | conv | iters | rms/depth | dev/ē | willmore | flips | "
+         "outside | ms | x pmp | reason |\n"
+      << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  // `outside` is not shown for the truth: there it counts the dented vertices not movable.
+  auto row = [&](const char* name, const Outcome& o, bool timed) {
+    const bool truth_row = std::strcmp(name, "truth") == 0;
+    out << "| " << name << " | " << (o.produced ? "yes" : "no") << " | " << o.status << " | "
+        << (timed && o.produced ? (o.converged ? "yes" : "no") : "") << " | "
+        << (timed && o.produced ? std::to_string(o.iterations) : "") << " | "
+        << (o.produced ? fixed(o.rms_depth, 4) : "") << " | "
+        << (o.produced ? fixed(o.line_deviation, 4) : "") << " | "
+        << (o.produced ? general(o.willmore) : "") << " | "
+        << (o.produced ? std::to_string(o.flips) : "") << " | "
+        << (o.produced && !truth_row ? std::to_string(o.outside_moved) : "") << " | "
+        << (timed && o.produced ? fixed(1000 * o.seconds, 1) : "") << " | "
+        << (timed && o.produced && o.x_pmp > 0 ? fixed(o.x_pmp, 2) : "") << " | " << cell(o.reason)
+        << " |\n";
+  };
+  row("input", input, false);
+  row("truth", truth, false);
+  for (int m = 0; m < NUMBER_OF_METHODS; ++m)
+    row(method_names[m], outcomes[std::size_t(m)], true);
+}
+
+void add_to_summary(Summary& s, const Outcome& o)
+{
+  ++s.cases;
+  if (!o.produced)
+    return;
+  ++s.produced;
+  s.converged += o.converged ? 1 : 0;
+  s.iterations.push_back(double(o.iterations));
+  s.rms_depth.push_back(o.rms_depth);
+  s.line_deviation.push_back(o.line_deviation);
+  if (o.x_pmp > 0)
+    s.x_pmp.push_back(o.x_pmp);
+  s.flips += o.flips;
+  s.outside += o.outside_moved;
+}
+
+// `patches`: "all" or "smooth", the cases summarised.
+void print_summary(std::ostream& out, const char* patches,
+                   const std::map<std::string, Summary>& summaries)
+{
+  out << "\n### Summary, " << patches
+      << " patches (medians over the cases where the method produced a mesh)\n\n"
+      << "| method | patches | cases | produced % | converged % | median iters | median "
+         "rms/depth | median dev/ē | median x pmp | total flips | any outside moved |\n"
+      << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const char* name : {"input", "pmp_fair", "xu_flow", "ours", "ours_mc"}) {
+    auto it = summaries.find(name);
+    if (it == summaries.end())
+      continue;
+    const Summary& s = it->second;
+    const bool is_input = std::strcmp(name, "input") == 0;
+    const double n = double((std::max)(s.cases, std::size_t(1)));
+    out << "| " << name << " | " << patches << " | " << s.cases << " | "
+        << fixed(100.0 * double(s.produced) / n, 0) << " | "
+        << (is_input ? "" : fixed(100.0 * double(s.converged) / n, 0)) << " | "
+        << (is_input ? "" : fixed(median(s.iterations), 1)) << " | "
+        << fixed(median(s.rms_depth), 4) << " | " << fixed(median(s.line_deviation), 4) << " | "
+        << (is_input ? "" : fixed(median(s.x_pmp), 2)) << " | " << s.flips << " | "
+        << (is_input ? "" : (s.outside > 0 ? "YES (" + std::to_string(s.outside) + ")" : "no"))
+        << " |\n";
+  }
+}
+
+void print_legend(std::ostream& out)
+{
+  out << "\n(patches: all the cases, or those of smooth patches only (largest dihedral <= 25°, "
+         "normals within 45° of the lights' normal; the others are the smoothest rough patches "
+         "of meshes with too few smooth ones); rms/depth: RMS distance of the movable vertices "
+         "to the undented surface / dent depth; dev/ē: RMS distance of the highlight nodes "
+         "inside the region to the undented surface's lines, in local mean edge lengths; x pmp: "
+         "median time / PMP::fair's median time on the same case; status: "
+         "HL::to_string(Fairing_report::Status), conv: converged)\n";
+}
+
+void dump_case(const std::string& dir, const HB::Real_dent_case& c)
+{
+  CGAL::IO::write_polygon_mesh(dir + "/" + c.name + "_input.off", c.input,
+                               CGAL::parameters::stream_precision(17));
+  CGAL::IO::write_polygon_mesh(dir + "/" + c.name + "_truth.off", c.truth,
+                               CGAL::parameters::stream_precision(17));
+  std::ofstream region(dir + "/" + c.name + "_region.txt");
+  for (auto f : c.region)
+    region << std::size_t(f) << "\n";
+}
+
+bool parse(int argc, char** argv, Options& options)
+{
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) {
+        std::cerr << "benchmark_real_dents: " << a << " needs a value\n";
+        std::exit(2);
+      }
+      return argv[++i];
+    };
+    if (a == "--table")
+      continue;
+    if (a == "--seed")
+      options.seed = std::uint32_t(std::stoul(value()));
+    else if (a == "--centres")
+      options.centres = std::size_t(std::stoul(value()));
+    else if (a == "--repetitions")
+      options.repetitions = (std::max)(1, std::stoi(value()));
+    else if (a == "--mesh")
+      options.only_mesh = value();
+    else if (a == "--dump")
+      options.dump_dir = value();
+    else {
+      std::cerr << "usage: benchmark_real_dents [--table] [--seed N] [--centres N] "
+                   "[--repetitions N] [--mesh STEM] [--dump DIR]\n";
+      return false;
+    }
+  }
+  return true;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  Options options;
+  if (!parse(argc, argv, options))
+    return 2;
+  const auto start = std::chrono::steady_clock::now();
+  std::ostream& out = std::cout;
+  out << "# Dents in real meshes (seed " << options.seed << ", up to " << options.centres
+      << " centres per mesh, depths 1 and 0.3 ē, median of " << options.repetitions << " runs)\n";
+  std::map<std::string, Summary> summaries, smooth_summaries;
+  HB::Real_dent_options dent_options;
+  dent_options.max_centres = options.centres;
+  for (const char* stem : {"beetle", "bunny", "camelhead", "fandisk", "rocker-arm", "spot"}) {
+    if (!options.only_mesh.empty() && options.only_mesh != stem)
+      continue;
+    const std::string path = std::string(HIGHLIGHT_LINES_SHARED_DATA_DIR) + "/" + stem + ".off";
+    Mesh mesh;
+    if (!std::ifstream(path) || !CGAL::IO::read_polygon_mesh(path, mesh) || mesh.is_empty()) {
+      out << "\n## " << stem << ": cannot read " << path << ", skipped\n";
+      continue;
+    }
+    const auto making = std::chrono::steady_clock::now();
+    const std::vector<HB::Real_dent_case> cases =
+        HB::make_real_dent_cases(mesh, stem, options.seed, dent_options);
+    const double making_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - making).count();
+    const std::size_t smooth_cases = std::size_t(
+        std::count_if(cases.begin(), cases.end(), [](const auto& c) { return c.smooth; }));
+    out << "\n## " << stem << ": " << num_vertices(mesh) << " vertices, " << num_faces(mesh)
+        << " faces; " << cases.size() / dent_options.depths.size() << " patches drawn ("
+        << smooth_cases / dent_options.depths.size() << " smooth, "
+        << (cases.size() - smooth_cases) / dent_options.depths.size() << " rough), " << cases.size()
+        << " cases (made in " << fixed(1000 * making_seconds, 0) << " ms)\n";
+    for (const HB::Real_dent_case& c : cases) {
+      if (!options.dump_dir.empty())
+        dump_case(options.dump_dir, c);
+      const HB::Region_info<Mesh> info(c.input, c.region);
+      std::vector<vertex_descriptor> movable;
+      std::string movable_error;
+      try {
+        HL::movable_vertices(c.input, c.region, std::back_inserter(movable));
+      } catch (const std::exception& e) {
+        movable_error = e.what();
+        movable = info.movable;
+      }
+      Outcome input, truth;
+      input.produced = truth.produced = true;
+      measure(input, c, info, movable, c.input);
+      measure(truth, c, info, movable, c.truth);
+      std::vector<Outcome> outcomes;
+      for (int m = 0; m < NUMBER_OF_METHODS; ++m)
+        outcomes.push_back(
+            evaluate(Method(m), c, info, movable, movable_error, options.repetitions));
+      const Outcome& pmp = outcomes[PMP_FAIR];
+      for (Outcome& o : outcomes)
+        if (o.produced && pmp.produced && pmp.seconds > 0)
+          o.x_pmp = o.seconds / pmp.seconds;
+      print_case(out, c, info, movable, movable_error, input, truth, outcomes);
+      out.flush();
+      for (auto* s : {&summaries, &smooth_summaries}) {
+        if (s == &smooth_summaries && !c.smooth)
+          continue;
+        add_to_summary((*s)["input"], input);
+        for (int m = 0; m < NUMBER_OF_METHODS; ++m)
+          add_to_summary((*s)[method_names[m]], outcomes[std::size_t(m)]);
+      }
+    }
+  }
+  print_summary(out, "all", summaries);
+  print_summary(out, "smooth", smooth_summaries);
+  print_legend(out);
+  out << "\n(total time "
+      << fixed(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1)
+      << " s)\n";
+  return 0;
+}
