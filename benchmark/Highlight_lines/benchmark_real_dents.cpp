@@ -3,7 +3,7 @@
 // same regions, moving the same vertices.
 //
 //   benchmark_real_dents [--table] [--seed N] [--centres N] [--repetitions N] [--mesh STEM]
-//                        [--dump DIR]
+//                        [--dump DIR] [--jitter J]
 //
 // The table mode is the only mode (`--table` is accepted and is the default): one Markdown
 // table per case, then two summary tables (one row per method): over all the cases, and over
@@ -23,6 +23,20 @@
 // (DIR/<case>_input.off, DIR/<case>_truth.off) and region (DIR/<case>_region.txt, face
 // indices).
 //
+// Scan-like triangulations: `--jitter J` (default 0: no jitter, the cases above bit for bit)
+// moves every vertex of each mesh tangentially, by a random vector of length up to J ē_g (ē_g
+// the mesh's mean edge length) in the plane orthogonal to its vertex normal, drawn from a
+// std::mt19937 seeded from `--seed` independently of the centres (jitter_tangentially() of
+// real_dent_cases.h). The centres and regions are chosen on the unjittered mesh (its smooth
+// patches; `patch smooth` refers to it), everything else (ē, the lights, the dent, the largest
+// dihedral and normal angles shown) on the jittered mesh, which is also the truth. At J = 0.3
+// to 0.45 the regions hold slivers with corners of a few degrees and folded triangles, as
+// scanned meshes do. Every case header ends with the triangles of the region of the dented
+// input: the smallest corner angle, the number of triangles with a corner below 5° and the
+// number of folded triangles (a face whose normal has a non-positive dot product with the sum
+// of its corners' unit vertex normals). A line after the summaries gives the extremes over all
+// the cases.
+//
 // Methods, each on a fresh copy of the dented mesh:
 //   pmp_fair  CGAL::Polygon_mesh_processing::fair(mesh, movable vertices), default parameters
 //             (bi-Laplacian, cotangent weights; continuity 1)
@@ -39,13 +53,14 @@
 //   status     ours: HL::to_string(report.status) (CONVERGED, ITERATION_LIMIT, STEP_BLOCKED,
 //              ...); conv: report.converged(), xu_flow: its convergence flag; pmp_fair: its
 //              return value
-//   iters      iterations (pmp_fair: 1)
+//   iters      iterations (pmp_fair: 1); the summaries give the median and the maximum
 //   rms/depth  RMS distance of the movable vertices to the undented surface / dent depth
 //              (fairing_quality.h); the `input` row is the dented input (doing nothing)
 //   dev/ē      RMS distance of the highlight nodes inside the region to the undented surface's
 //              lines of the same light (deviation_from_reference), in ē
 //   willmore   discrete Willmore energy of the region (Σ A‖K‖², fairing_quality.h)
-//   flips      faces whose normal turned by more than 90° from the dented input
+//   flips      faces whose normal turned by more than 90° from the dented input; "(k folded)":
+//              k of them were folded in the input (unfolding one counts as a flip)
 //   outside    vertices outside the movable set that moved (bit-exact comparison)
 //   ms, x pmp  median time of the method and its ratio to PMP::fair's median
 #include "fairing_quality.h"
@@ -85,6 +100,7 @@ struct Options
   std::size_t centres = 3;
   int repetitions = 3;
   std::string only_mesh, dump_dir;
+  double jitter = 0; // in ē_g
 };
 
 // One method (or the input / truth) on one case.
@@ -98,6 +114,7 @@ struct Outcome
   double seconds = 0, x_pmp = 0; // medians; x_pmp <= 0: not available
   double rms_depth = 0, line_deviation = 0, willmore = 0;
   std::size_t flips = 0, outside_moved = 0;
+  std::size_t flips_of_folded = 0; // of `flips`, faces folded in the dented input
 };
 
 struct Run
@@ -151,14 +168,17 @@ double median(std::vector<double> v)
   return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+// `folded`: the faces of the region folded in the dented input.
 void measure(Outcome& o, const HB::Real_dent_case& c, const HB::Region_info<Mesh>& info,
-             const std::vector<vertex_descriptor>& movable, const Mesh& mesh)
+             const std::vector<vertex_descriptor>& movable,
+             const std::vector<Mesh::Face_index>& folded, const Mesh& mesh)
 {
   o.rms_depth = HB::rms_distance_to_surface(mesh, c.truth, info) / c.dent_depth;
   o.line_deviation =
       HB::deviation_from_reference(mesh, c.truth, info, c.lights).rms / c.mean_edge_length;
   o.willmore = HB::willmore_energy_in_region(mesh, info);
   o.flips = HB::count_flipped_faces(mesh, c.input);
+  o.flips_of_folded = HB::count_flipped_faces(mesh, c.input, folded);
   o.outside_moved = HB::count_moved_vertices_outside(mesh, c.input, movable);
 }
 
@@ -166,7 +186,7 @@ void measure(Outcome& o, const HB::Real_dent_case& c, const HB::Region_info<Mesh
 // failure) and measures the last result.
 Outcome evaluate(Method method, const HB::Real_dent_case& c, const HB::Region_info<Mesh>& info,
                  const std::vector<vertex_descriptor>& movable, const std::string& movable_error,
-                 int repetitions)
+                 const std::vector<Mesh::Face_index>& folded, int repetitions)
 {
   Outcome o;
   if (method == PMP_FAIR && !movable_error.empty()) {
@@ -209,7 +229,7 @@ Outcome evaluate(Method method, const HB::Real_dent_case& c, const HB::Region_in
   if (!o.produced)
     return o;
   o.seconds = median(times);
-  measure(o, c, info, movable, result);
+  measure(o, c, info, movable, folded, result);
   return o;
 }
 
@@ -240,15 +260,23 @@ std::string cell(std::string s)
   return s;
 }
 
+// A flip count, with the flips of faces folded in the input if any.
+std::string flips_text(std::size_t flips, std::size_t of_folded)
+{
+  return std::to_string(flips) +
+         (of_folded > 0 ? " (" + std::to_string(of_folded) + " folded)" : std::string());
+}
+
 struct Summary
 {
-  std::size_t cases = 0, produced = 0, converged = 0, flips = 0, outside = 0;
+  std::size_t cases = 0, produced = 0, converged = 0, flips = 0, flips_of_folded = 0, outside = 0;
   std::vector<double> iterations, rms_depth, line_deviation, x_pmp;
 };
 
 void print_case(std::ostream& out, const HB::Real_dent_case& c, const HB::Region_info<Mesh>& info,
                 const std::vector<vertex_descriptor>& movable, const std::string& movable_error,
-                const Outcome& input, const Outcome& truth, const std::vector<Outcome>& outcomes)
+                const HB::Region_triangle_quality& quality, const Outcome& input,
+                const Outcome& truth, const std::vector<Outcome>& outcomes)
 {
   const double e = c.mean_edge_length;
   // Dented vertices that no method may move, and the largest of their displacements.
@@ -287,11 +315,15 @@ void print_case(std::ostream& out, const HB::Real_dent_case& c, const HB::Region
                     " depth)"
               : std::string())
       << "; ē = " << general(e) << ", depth " << fixed(c.dent_depth / e, 2) << " ē; patch "
-      << (c.smooth ? "smooth" : "rough") << ": largest dihedral "
-      << fixed(c.max_dihedral_degrees, 1) << "°, largest normal angle "
+      << (c.smooth ? "smooth" : "rough")
+      << (c.jitter > 0 ? std::string(" (chosen before the jitter)") : std::string())
+      << ": largest dihedral " << fixed(c.max_dihedral_degrees, 1) << "°, largest normal angle "
       << fixed(c.max_normal_angle_degrees, 1) << "°; light spacing "
       << fixed(CGAL::to_double(c.lights.spacing()) / e, 2) << " ē, light levels in the region "
-      << levels_text << "\n\n";
+      << levels_text << "; region triangles (input): smallest corner "
+      << fixed(quality.smallest_corner_degrees, 2) << "°, " << quality.slivers << " below 5°, "
+      << quality.folded.size() << " folded"
+      << "\n\n";
   out << "| method | produced | status | conv | iters | rms/depth | dev/ē | willmore | flips | "
          "outside | ms | x pmp | reason |\n"
       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
@@ -304,7 +336,7 @@ void print_case(std::ostream& out, const HB::Real_dent_case& c, const HB::Region
         << (o.produced ? fixed(o.rms_depth, 4) : "") << " | "
         << (o.produced ? fixed(o.line_deviation, 4) : "") << " | "
         << (o.produced ? general(o.willmore) : "") << " | "
-        << (o.produced ? std::to_string(o.flips) : "") << " | "
+        << (o.produced ? flips_text(o.flips, o.flips_of_folded) : "") << " | "
         << (o.produced && !truth_row ? std::to_string(o.outside_moved) : "") << " | "
         << (timed && o.produced ? fixed(1000 * o.seconds, 1) : "") << " | "
         << (timed && o.produced && o.x_pmp > 0 ? fixed(o.x_pmp, 2) : "") << " | " << cell(o.reason)
@@ -329,6 +361,7 @@ void add_to_summary(Summary& s, const Outcome& o)
   if (o.x_pmp > 0)
     s.x_pmp.push_back(o.x_pmp);
   s.flips += o.flips;
+  s.flips_of_folded += o.flips_of_folded;
   s.outside += o.outside_moved;
 }
 
@@ -338,9 +371,9 @@ void print_summary(std::ostream& out, const char* patches,
 {
   out << "\n### Summary, " << patches
       << " patches (medians over the cases where the method produced a mesh)\n\n"
-      << "| method | patches | cases | produced % | converged % | median iters | median "
-         "rms/depth | median dev/ē | median x pmp | total flips | any outside moved |\n"
-      << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+      << "| method | patches | cases | produced % | converged % | median iters | max iters | "
+         "median rms/depth | median dev/ē | median x pmp | total flips | any outside moved |\n"
+      << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const char* name : {"input", "pmp_fair", "xu_flow", "ours", "ours_mc"}) {
     auto it = summaries.find(name);
     if (it == summaries.end())
@@ -352,8 +385,12 @@ void print_summary(std::ostream& out, const char* patches,
         << fixed(100.0 * double(s.produced) / n, 0) << " | "
         << (is_input ? "" : fixed(100.0 * double(s.converged) / n, 0)) << " | "
         << (is_input ? "" : fixed(median(s.iterations), 1)) << " | "
-        << fixed(median(s.rms_depth), 4) << " | " << fixed(median(s.line_deviation), 4) << " | "
-        << (is_input ? "" : fixed(median(s.x_pmp), 2)) << " | " << s.flips << " | "
+        << (is_input || s.iterations.empty() ? ""
+                                             : std::to_string(std::size_t(*std::max_element(
+                                                   s.iterations.begin(), s.iterations.end()))))
+        << " | " << fixed(median(s.rms_depth), 4) << " | " << fixed(median(s.line_deviation), 4)
+        << " | " << (is_input ? "" : fixed(median(s.x_pmp), 2)) << " | "
+        << flips_text(s.flips, s.flips_of_folded) << " | "
         << (is_input ? "" : (s.outside > 0 ? "YES (" + std::to_string(s.outside) + ")" : "no"))
         << " |\n";
   }
@@ -379,6 +416,12 @@ void dump_case(const std::string& dir, const HB::Real_dent_case& c)
   std::ofstream region(dir + "/" + c.name + "_region.txt");
   for (auto f : c.region)
     region << std::size_t(f) << "\n";
+  // Base point, direction, plane normal, spacing: what the main program's --base --direction
+  // --normal --spacing take.
+  std::ofstream lights(dir + "/" + c.name + "_lights.txt");
+  lights.precision(17);
+  lights << c.lights.base_point() << " " << c.lights.light_direction() << " "
+         << c.lights.plane_normal() << " " << c.lights.spacing() << "\n";
 }
 
 bool parse(int argc, char** argv, Options& options)
@@ -404,9 +447,11 @@ bool parse(int argc, char** argv, Options& options)
       options.only_mesh = value();
     else if (a == "--dump")
       options.dump_dir = value();
+    else if (a == "--jitter")
+      options.jitter = std::stod(value());
     else {
       std::cerr << "usage: benchmark_real_dents [--table] [--seed N] [--centres N] "
-                   "[--repetitions N] [--mesh STEM] [--dump DIR]\n";
+                   "[--repetitions N] [--mesh STEM] [--dump DIR] [--jitter J]\n";
       return false;
     }
   }
@@ -423,10 +468,20 @@ int main(int argc, char** argv)
   const auto start = std::chrono::steady_clock::now();
   std::ostream& out = std::cout;
   out << "# Dents in real meshes (seed " << options.seed << ", up to " << options.centres
-      << " centres per mesh, depths 1 and 0.3 ē, median of " << options.repetitions << " runs)\n";
+      << " centres per mesh, depths 1 and 0.3 ē, median of " << options.repetitions << " runs"
+      << (options.jitter > 0 ? "; tangential jitter up to " + general(options.jitter) + " ē_g"
+                             : std::string())
+      << ")\n";
   std::map<std::string, Summary> summaries, smooth_summaries;
   HB::Real_dent_options dent_options;
   dent_options.max_centres = options.centres;
+  dent_options.jitter = options.jitter;
+  // The extremes of the region triangles over all the cases (of their dented inputs).
+  double smallest_corner = 180;
+  std::string smallest_corner_case;
+  std::size_t cases_total = 0, cases_with_slivers = 0, cases_with_folds = 0, most_slivers = 0,
+              most_folded = 0;
+  std::string most_slivers_case, most_folded_case;
   for (const char* stem : {"beetle", "bunny", "camelhead", "fandisk", "rocker-arm", "spot"}) {
     if (!options.only_mesh.empty() && options.only_mesh != stem)
       continue;
@@ -447,7 +502,12 @@ int main(int argc, char** argv)
         << " faces; " << cases.size() / dent_options.depths.size() << " patches drawn ("
         << smooth_cases / dent_options.depths.size() << " smooth, "
         << (cases.size() - smooth_cases) / dent_options.depths.size() << " rough), " << cases.size()
-        << " cases (made in " << fixed(1000 * making_seconds, 0) << " ms)\n";
+        << " cases (made in " << fixed(1000 * making_seconds, 0) << " ms)"
+        << (options.jitter > 0
+                ? "; jittered tangentially by up to " + general(options.jitter) + " ē_g = " +
+                      general(options.jitter * HB::real_dent_detail::global_mean_edge_length(mesh))
+                : std::string())
+        << "\n";
     for (const HB::Real_dent_case& c : cases) {
       if (!options.dump_dir.empty())
         dump_case(options.dump_dir, c);
@@ -460,19 +520,35 @@ int main(int argc, char** argv)
         movable_error = e.what();
         movable = info.movable;
       }
+      const HB::Region_triangle_quality quality = HB::region_triangle_quality(c.input, c.region);
+      ++cases_total;
+      cases_with_slivers += quality.slivers > 0 ? 1 : 0;
+      cases_with_folds += quality.folded.empty() ? 0 : 1;
+      if (quality.smallest_corner_degrees < smallest_corner) {
+        smallest_corner = quality.smallest_corner_degrees;
+        smallest_corner_case = c.name;
+      }
+      if (quality.slivers > most_slivers) {
+        most_slivers = quality.slivers;
+        most_slivers_case = c.name;
+      }
+      if (quality.folded.size() > most_folded) {
+        most_folded = quality.folded.size();
+        most_folded_case = c.name;
+      }
       Outcome input, truth;
       input.produced = truth.produced = true;
-      measure(input, c, info, movable, c.input);
-      measure(truth, c, info, movable, c.truth);
+      measure(input, c, info, movable, quality.folded, c.input);
+      measure(truth, c, info, movable, quality.folded, c.truth);
       std::vector<Outcome> outcomes;
       for (int m = 0; m < NUMBER_OF_METHODS; ++m)
-        outcomes.push_back(
-            evaluate(Method(m), c, info, movable, movable_error, options.repetitions));
+        outcomes.push_back(evaluate(Method(m), c, info, movable, movable_error, quality.folded,
+                                    options.repetitions));
       const Outcome& pmp = outcomes[PMP_FAIR];
       for (Outcome& o : outcomes)
         if (o.produced && pmp.produced && pmp.seconds > 0)
           o.x_pmp = o.seconds / pmp.seconds;
-      print_case(out, c, info, movable, movable_error, input, truth, outcomes);
+      print_case(out, c, info, movable, movable_error, quality, input, truth, outcomes);
       out.flush();
       for (auto* s : {&summaries, &smooth_summaries}) {
         if (s == &smooth_summaries && !c.smooth)
@@ -485,6 +561,13 @@ int main(int argc, char** argv)
   }
   print_summary(out, "all", summaries);
   print_summary(out, "smooth", smooth_summaries);
+  out << "\n(region triangles of the dented inputs, over the " << cases_total
+      << " cases: smallest corner " << fixed(smallest_corner, 2) << "°"
+      << (smallest_corner_case.empty() ? std::string() : " (" + smallest_corner_case + ")") << "; "
+      << cases_with_slivers << " cases with corners below 5° (most: " << most_slivers
+      << (most_slivers_case.empty() ? std::string() : " in " + most_slivers_case) << "); "
+      << cases_with_folds << " cases with folded triangles (most: " << most_folded
+      << (most_folded_case.empty() ? std::string() : " in " + most_folded_case) << "))\n";
   print_legend(out);
   out << "\n(total time "
       << fixed(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1)

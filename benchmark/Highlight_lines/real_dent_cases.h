@@ -10,6 +10,7 @@
 // benchmark_real_dents.cpp and tests.
 //
 //   auto cases = make_real_dent_cases(mesh, "bunny", seed);  // up to 3 centres x 2 depths
+//   options.jitter = 0.3;  // the same centres on a scan-like triangulation of the mesh
 //
 // Definitions (all distances Euclidean; ē_g is the mean edge length of the whole mesh):
 // - *Vertex normal*: eq. 3 of the paper, the normalised sum of the cross products
@@ -67,10 +68,25 @@
 //   highlight distance of every region vertex P of the undented mesh with its normal N, so that
 //   about 10 lights (9 to 11 levels) cross the region.
 //
+// - *Jitter* (scan-like triangulations; `jitter` J in ē_g, 0 by default: no jitter, the cases
+//   above bit for bit): jitter_tangentially() moves every vertex of the mesh by a random vector
+//   drawn uniformly in the disk of radius J ē_g of the plane orthogonal to its vertex normal
+//   (both taken on the unjittered mesh), which leaves the surface nearly where it was but
+//   skews its triangles: at J = 0.3–0.45 slivers with corners of a few degrees and folded
+//   triangles appear, as in scanned meshes. The generator is a std::mt19937 seeded with
+//   std::seed_seq{seed, 0x6a69, 0x74746572} ("jitter"), independent of the centre draw. The
+//   jittered patches are rougher, so the centres and their regions are chosen on the
+//   *unjittered* mesh as above (`smooth` and the candidate criteria refer to it; the jitter
+//   does not change the connectivity, so the regions remain valid); then the mesh is jittered
+//   and everything else is computed on the jittered mesh as above: ē (with the jittered ē_g),
+//   ρ, Z, the largest dihedral and normal angles reported, the lights, the vertex normals and
+//   the dent. The jittered, undented mesh is the truth and the mesh the dent is pressed into.
+//
 // Helpers: count_flipped_faces() (faces whose normal turned by more than 90° from a reference
 // of the same connectivity), count_moved_vertices_outside() / only_given_vertices_moved()
 // (bit-exact comparison of every other vertex point), levels_in_region() (the light indices of
-// the highlight lines computed on the region only).
+// the highlight lines computed on the region only), region_triangle_quality() (the smallest
+// corner angle, the slivers and the folded triangles of a region).
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Highlight_lines/Light_setup.h>
@@ -111,6 +127,7 @@ struct Real_dent_options
   double max_rough_normal_angle_degrees = 75; // (e), every candidate
   bool fill_with_rough = true;                // fill up with the smoothest rough patches
   double levels_across = 10;
+  double jitter = 0; // tangential jitter of the mesh, in ē_g (0: none; see the file comment)
 };
 
 /// One dent case.
@@ -130,7 +147,9 @@ struct Real_dent_case
   double region_radius = 0;                             // ρ
   double max_dihedral_degrees = 0;                      // largest dihedral angle in the region
   double max_normal_angle_degrees = 0;                  // largest face normal angle to Z
-  bool smooth = true; // a smooth patch (c, d), or else the smoothest rough patches (see above)
+  bool smooth = true; // a smooth patch (c, d), or else the smoothest rough patches (see above);
+                      // with a jitter, of the unjittered mesh
+  double jitter = 0;  // the tangential jitter of `truth` and `input`, in ē_g (0: none)
 };
 
 namespace real_dent_detail {
@@ -325,6 +344,24 @@ struct Patch
   Vector normal = CGAL::NULL_VECTOR; // Z
 };
 
+// The largest dihedral angle over the edges between two faces of `region` (each once), in
+// degrees; `cross` holds the cross products of the faces of `region`, which are marked in
+// `scratch.faces`.
+inline double max_dihedral_degrees(const Dent_mesh& mesh, const std::vector<Face>& region,
+                                   const std::vector<Vector>& cross, const Scratch& scratch)
+{
+  double largest = 0;
+  for (std::size_t i = 0; i < region.size(); ++i)
+    for (auto h : CGAL::halfedges_around_face(mesh.halfedge(region[i]), mesh)) {
+      const Face g = mesh.face(mesh.opposite(h));
+      if (g == Dent_mesh::null_face() || !scratch.faces.contains(std::size_t(g)) ||
+          !(region[i] < g))
+        continue;
+      largest = (std::max)(largest, angle_degrees(cross[i], face_cross(mesh, g)));
+    }
+  return largest;
+}
+
 inline Patch examine(const Dent_mesh& mesh, Vertex c, double global_edge,
                      const Real_dent_options& options, Scratch& scratch)
 {
@@ -374,22 +411,51 @@ inline Patch examine(const Dent_mesh& mesh, Vertex c, double global_edge,
     patch.max_normal_angle = (std::max)(patch.max_normal_angle, angle_degrees(n, Z));
   if (!(patch.max_normal_angle <= options.max_rough_normal_angle_degrees))
     return patch;
-  // (c) dihedral angles, over the edges between two faces of the region (each once).
-  for (std::size_t i = 0; i < region.size(); ++i)
-    for (auto h : CGAL::halfedges_around_face(mesh.halfedge(region[i]), mesh)) {
-      const Face g = mesh.face(mesh.opposite(h));
-      if (g == Dent_mesh::null_face() || !scratch.faces.contains(std::size_t(g)) ||
-          !(region[i] < g))
-        continue;
-      patch.max_dihedral =
-          (std::max)(patch.max_dihedral, angle_degrees(cross[i], face_cross(mesh, g)));
-    }
+  // (c) dihedral angles.
+  patch.max_dihedral = max_dihedral_degrees(mesh, region, cross, scratch);
   patch.ok = true;
   patch.smooth = patch.max_dihedral <= options.max_dihedral_degrees &&
                  patch.max_normal_angle <= options.max_normal_angle_degrees;
   patch.mean_edge_length = e;
   patch.region = std::move(region);
   patch.normal = Z;
+  return patch;
+}
+
+// A chosen patch (`chosen`, examined on a mesh of the same connectivity) measured again on
+// `mesh`, the jittered mesh: ē (`global_edge` is ē_g of `mesh`), ρ, Z, the largest dihedral and
+// normal angles, as examine() does; the region and `smooth` are kept. `ok == false` if ē or Z
+// vanish on `mesh`.
+inline Patch remeasure(const Dent_mesh& mesh, Vertex c, const Patch& chosen, double global_edge,
+                       Scratch& scratch)
+{
+  Patch patch;
+  patch.smooth = chosen.smooth;
+  patch.region = chosen.region;
+  patch.mean_edge_length =
+      mean_edge_length_of(mesh, ball_component(mesh, c, 8 * global_edge, scratch), scratch);
+  scratch.faces.clear(mesh.number_of_faces());
+  scratch.vertices.clear(mesh.number_of_vertices());
+  Vector sum = CGAL::NULL_VECTOR;
+  std::vector<Vector> cross;
+  cross.reserve(patch.region.size());
+  for (Face f : patch.region) {
+    scratch.faces.insert(std::size_t(f));
+    for (Vertex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      if (scratch.vertices.insert(std::size_t(v)))
+        patch.radius = (std::max)(patch.radius,
+                                  std::sqrt(CGAL::squared_distance(mesh.point(v), mesh.point(c))));
+    cross.push_back(face_cross(mesh, f));
+    sum = sum + cross.back();
+  }
+  if (!(patch.mean_edge_length > 0) || !(length(sum) > 0))
+    return patch;
+  const Vector Z = sum / length(sum);
+  for (const Vector& n : cross)
+    patch.max_normal_angle = (std::max)(patch.max_normal_angle, angle_degrees(n, Z));
+  patch.max_dihedral = max_dihedral_degrees(mesh, patch.region, cross, scratch);
+  patch.normal = Z;
+  patch.ok = true;
   return patch;
 }
 
@@ -410,10 +476,52 @@ inline std::string depth_label(double depth)
 
 } // namespace real_dent_detail
 
+/// Moves every vertex of `mesh` tangentially, as a scanner's triangulation would place it: by a
+/// random vector drawn uniformly in the disk of radius `amount` ē_g (ē_g the mean edge length of
+/// `mesh`) of the plane orthogonal to the vertex's area-weighted normal (eq. 3), ē_g and the
+/// normals taken on `mesh` before any move. The connectivity is unchanged. The vertices are
+/// visited in index order and draw, from one std::mt19937 seeded with std::seed_seq{seed,
+/// 0x6a69, 0x74746572}, a point of the square [-1, 1]² (two raw outputs, mapped as the centres'
+/// light directions are: portable) until it lies in the unit disk; its coordinates are taken in
+/// the basis (t, n x t) of the plane, t = n x a normalised, a the coordinate axis least aligned
+/// with the normal n. A vertex without a normal (isolated, or only degenerate faces around it)
+/// draws but stays. Nothing moves if `amount` is not positive or `mesh` has removed elements.
+/// At `amount` 0.3 to 0.45 the triangles of a regular mesh become slivers with corners of a few
+/// degrees, and some fold over their neighbours.
+inline void jitter_tangentially(Dent_mesh& mesh, double amount, std::uint32_t seed)
+{
+  namespace D = real_dent_detail;
+  if (!(amount > 0) || mesh.number_of_vertices() == 0 || mesh.has_garbage())
+    return;
+  const double radius = amount * D::global_mean_edge_length(mesh);
+  const std::vector<D::Vector> normal = D::vertex_normals(mesh);
+  std::seed_seq seq{seed, std::uint32_t(0x6a69), std::uint32_t(0x74746572)};
+  std::mt19937 rng(seq);
+  for (D::Vertex v : mesh.vertices()) {
+    double x = 0, y = 0;
+    do {
+      x = D::symmetric_unit(rng);
+      y = D::symmetric_unit(rng);
+    } while (!(x * x + y * y <= 1));
+    const D::Vector& n = normal[std::size_t(v)];
+    if (!(n.squared_length() > 0))
+      continue;
+    const double ax = std::abs(n.x()), ay = std::abs(n.y()), az = std::abs(n.z());
+    const D::Vector axis = ax <= ay && ax <= az ? D::Vector(1, 0, 0)
+                           : ay <= az           ? D::Vector(0, 1, 0)
+                                                : D::Vector(0, 0, 1);
+    D::Vector t = CGAL::cross_product(n, axis);
+    t = t / D::length(t);
+    const D::Vector u = CGAL::cross_product(n, t);
+    mesh.point(v) = mesh.point(v) + ((radius * x) * t + (radius * y) * u);
+  }
+}
+
 /// The dent cases of `mesh` (see the file comment): up to `options.max_centres` centres, one
 /// case per centre and depth, in the order centre by centre (the smooth patches first, then the
 /// rough ones from the smoothest). `name` is the mesh's name (the file stem), the prefix of the
-/// case names.
+/// case names. With `options.jitter` > 0 the centres and regions are chosen on `mesh`, and the
+/// cases are made on `mesh` jittered by jitter_tangentially(mesh, options.jitter, seed).
 inline std::vector<Real_dent_case> make_real_dent_cases(const Dent_mesh& mesh,
                                                         const std::string& name, std::uint32_t seed,
                                                         const Real_dent_options& options = {})
@@ -487,10 +595,28 @@ inline std::vector<Real_dent_case> make_real_dent_cases(const Dent_mesh& mesh,
     }
   }
 
+  // With a jitter, the chosen patches are measured again on the jittered mesh, and everything
+  // below is computed on it (see the file comment).
+  const bool jittering = options.jitter > 0;
+  Dent_mesh jittered;
+  std::vector<D::Vector> jittered_normal;
+  if (jittering) {
+    jittered = mesh;
+    jitter_tangentially(jittered, options.jitter, seed);
+    jittered_normal = D::vertex_normals(jittered);
+    const double jittered_edge = D::global_mean_edge_length(jittered);
+    for (Kept& k : kept)
+      k.patch = D::remeasure(jittered, k.centre, k.patch, jittered_edge, scratch);
+  }
+  const Dent_mesh& geometry = jittering ? jittered : mesh;
+  const std::vector<D::Vector>& vertex_normal = jittering ? jittered_normal : normal;
+
   for (const Kept& k : kept) {
     const D::Patch& patch = k.patch;
+    if (!patch.ok)
+      continue;
     const double e = patch.mean_edge_length;
-    const D::Point centre = mesh.point(k.centre);
+    const D::Point centre = geometry.point(k.centre);
     const D::Vector& Z = patch.normal;
 
     // H: a random unit vector, made perpendicular to Z.
@@ -511,12 +637,12 @@ inline std::vector<Real_dent_case> make_real_dent_cases(const Dent_mesh& mesh,
 
     std::set<D::Vertex> region_vertices;
     for (D::Face f : patch.region)
-      for (D::Vertex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      for (D::Vertex v : CGAL::vertices_around_face(geometry.halfedge(f), geometry))
         region_vertices.insert(v);
     double dmin = std::numeric_limits<double>::infinity(), dmax = -dmin;
     for (D::Vertex v : region_vertices) {
-      const D::Vector& N = normal[std::size_t(v)];
-      const double d = (CGAL::cross_product(mesh.point(v) - A0, H) * N) / (Z * N);
+      const D::Vector& N = vertex_normal[std::size_t(v)];
+      const double d = (CGAL::cross_product(geometry.point(v) - A0, H) * N) / (Z * N);
       dmin = (std::min)(dmin, d);
       dmax = (std::max)(dmax, d);
     }
@@ -530,8 +656,8 @@ inline std::vector<Real_dent_case> make_real_dent_cases(const Dent_mesh& mesh,
       Real_dent_case c;
       c.name =
           name + "_v" + std::to_string(std::size_t(k.centre)) + "_d" + D::depth_label(depth_in_e);
-      c.truth = mesh;
-      c.input = mesh;
+      c.truth = geometry;
+      c.input = geometry;
       c.region = patch.region;
       c.lights = lights;
       c.mean_edge_length = e;
@@ -541,12 +667,13 @@ inline std::vector<Real_dent_case> make_real_dent_cases(const Dent_mesh& mesh,
       c.max_dihedral_degrees = patch.max_dihedral;
       c.max_normal_angle_degrees = patch.max_normal_angle;
       c.smooth = patch.smooth;
+      c.jitter = jittering ? options.jitter : 0.0;
       for (D::Vertex v : region_vertices) {
-        const double u = CGAL::squared_distance(mesh.point(v), centre) / (R * R);
+        const double u = CGAL::squared_distance(geometry.point(v), centre) / (R * R);
         if (!(u < 1))
           continue;
         const double w = (1 - u) * (1 - u) * (1 - u);
-        c.input.point(v) = mesh.point(v) - (c.dent_depth * w) * normal[std::size_t(v)];
+        c.input.point(v) = geometry.point(v) - (c.dent_depth * w) * vertex_normal[std::size_t(v)];
         c.dented_vertices.push_back(v);
       }
       cases.push_back(std::move(c));
@@ -603,6 +730,50 @@ bool only_given_vertices_moved(const Dent_mesh& mesh, const Dent_mesh& reference
                                const VertexRange& allowed)
 {
   return count_moved_vertices_outside(mesh, reference, allowed) == 0;
+}
+
+/// The shape of the triangles of a region (region_triangle_quality()).
+struct Region_triangle_quality
+{
+  double smallest_corner_degrees = 180;      // the smallest corner angle of the region's triangles
+  std::size_t slivers = 0;                   // triangles with a corner below the sliver angle
+  std::vector<Dent_mesh::Face_index> folded; // the folded triangles, in the order of the region
+};
+
+/// The smallest corner angle (atan2(|u x w|, u·w) at each corner, in degrees) of the triangles
+/// of `faces`, the number of *slivers* (a corner below `sliver_degrees`, 5° as
+/// Fairing_report::number_of_sliver_triangles) and the *folded* triangles: those whose cross
+/// product has a non-positive dot product with the sum of the unit vertex normals (eq. 3, on
+/// the whole of `mesh`) of their three corners, as Fairing_report::number_of_folded_triangles.
+template <typename FaceRange>
+Region_triangle_quality region_triangle_quality(const Dent_mesh& mesh, const FaceRange& faces,
+                                                double sliver_degrees = 5)
+{
+  namespace D = real_dent_detail;
+  Region_triangle_quality quality;
+  const std::vector<D::Vector> normal = D::vertex_normals(mesh);
+  for (Dent_mesh::Face_index f : faces) {
+    std::array<D::Vertex, 3> corner;
+    std::size_t k = 0;
+    for (D::Vertex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      if (k < 3)
+        corner[k++] = v;
+    double smallest = 180;
+    D::Vector corner_normals = CGAL::NULL_VECTOR;
+    for (std::size_t i = 0; i < 3; ++i) {
+      const D::Point& p = mesh.point(corner[i]);
+      const D::Vector u = mesh.point(corner[(i + 1) % 3]) - p;
+      const D::Vector w = mesh.point(corner[(i + 2) % 3]) - p;
+      smallest = (std::min)(smallest,
+                            std::atan2(D::length(CGAL::cross_product(u, w)), u * w) * 180 / D::pi);
+      corner_normals = corner_normals + normal[std::size_t(corner[i])];
+    }
+    quality.smallest_corner_degrees = (std::min)(quality.smallest_corner_degrees, smallest);
+    quality.slivers += smallest < sliver_degrees ? 1 : 0;
+    if (!(D::face_cross(mesh, f) * corner_normals > 0))
+      quality.folded.push_back(f);
+  }
+  return quality;
 }
 
 /// The light indices of the highlight lines of `mesh` computed on `region` only.

@@ -155,12 +155,14 @@ with its normal, and every highlight node outside the region. Each iteration min
 `F = ω1 q_fair + ω2 q_diff` (eq. 15) under bounds `|x_i| <= r_i` with a bound-constrained QP
 solver, moves the vertices without flipping a face, and recomputes the highlight lines around
 the region; it stops when the step's `max |x_i| / ē < ε` (eq. 17, `ē` the mean edge length in
-the region) or after the iteration bound.
+the region), when `F` is stationary (over the last three steps, each below `10 ε ē`, it fell by
+less than `10^-3` of itself per step), or after the iteration bound.
 
-- *Step control*: `r_i` is a trust radius per vertex. It starts at eq. 16's bound, half the
-  shortest edge at `V_i`, doubles where a vertex used its whole bound and the step lowered `F`
-  by at least 3/4 of what the program predicted, and halves where `F` fell by less than 1/4 of
-  it; it stays between 1/1024 of eq. 16's bound and four times it plus `ē`.
+- *Step control*: `r_i = μ b_i`, `b_i` eq. 16's bound (half the shortest edge at `V_i`) and
+  `μ` a trust-region factor for the whole region: it starts at 1, doubles (up to 64) when a step
+  lowered `F` by at least 3/4 of what the program predicted and some vertex used its whole
+  bound, and halves when `F` fell by less than 1/4 of it; `r_i` stays between `b_i / 1024` and
+  `4 b_i + ē`.
 - *No flips*: a face *flips* when its normal turns by more than 90° from its normal in the
   input mesh, or when it degenerates; a face already folded in the input (its normal opposes
   the sum of its corners' vertex normals) only has to stay non-degenerate. Where a step would

@@ -23,7 +23,8 @@ struct Fairing_report
 {
   /// How the iteration ended.
   enum class Status {
-    /// the largest displacement of a step fell below ε times the mean edge length (eq. 17)
+    /// the largest displacement of a step fell below ε times the mean edge length (eq. 17), or
+    /// the target value `F` became stationary under steps below 10 ε times it
     CONVERGED,
     /// the iteration bound was reached first; the mesh is the iterate of lowest `F`
     ITERATION_LIMIT,
@@ -51,8 +52,7 @@ struct Fairing_report
     /// convergence test (eq. 17).
     double relative_max_displacement = 0;
     /// 1 when the step taken is the solution of a program; otherwise the smallest fraction of
-    /// its displacement a vertex was given, where moving it further would have flipped a face
-    /// (then the iteration does not count as converged).
+    /// its displacement a vertex was given, where moving it further would have flipped a face.
     double step_scale = 1;
     /// Movable vertices held back because the program's solution would have flipped a face
     /// around them (a face whose normal turns by more than 90° from its input normal): their

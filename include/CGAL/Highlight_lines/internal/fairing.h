@@ -126,11 +126,11 @@ public:
         report.status = Fairing_report::Status::STOPPED_BY_VISITOR;
         break;
       }
-      if (converged(step)) {
+      blocked_in_a_row = blocked_ ? blocked_in_a_row + 1 : 0;
+      if (!blocked_ && converged(report.history)) {
         report.status = Fairing_report::Status::CONVERGED;
         break;
       }
-      blocked_in_a_row = step.max_displacement == 0 ? blocked_in_a_row + 1 : 0;
       if (blocked_in_a_row == 2) {
         report.status = Fairing_report::Status::STEP_BLOCKED;
         break;
@@ -373,17 +373,20 @@ private:
     solver_.set_r(step.target_value);
   }
 
-  // The trust region: |x_i| <= r_i. It starts at eq. 16's bound, half the shortest edge at
-  // V_i; it grows where a vertex used its whole bound and the step lowered F about as much as
-  // the program predicted, and shrinks where it did not (see adapt_trust_region()).
+  // The trust region: |x_i| <= r_i = min(μ b_i, h_i), b_i eq. 16's bound at the current mesh
+  // (half the shortest edge at V_i), μ one factor for the whole region that grows while the
+  // steps lower F as the programs predict and shrinks when they do not (adapt_trust_region()),
+  // h_i a hold on a vertex whose step would have flipped a face, doubled with each step
+  // after. A common factor keeps the set of vertices at their bounds stable from one program
+  // to the next, which keeps the solver's warm starts cheap.
   void start_step_control()
   {
     const std::size_t n = region_.movable.size();
-    radius_.resize(n);
-    for (std::size_t i = 0; i < n; ++i)
-      radius_[i] = 0.5 * shortest_edge(region_.movable[i]);
+    radius_.assign(n, 0.0);
+    hold_.assign(n, std::numeric_limits<double>::infinity());
     restrained_.assign(n, 0);
     applied_.assign(n, 0.0);
+    trust_factor_ = 1;
     predicted_decrease_ = std::numeric_limits<double>::quiet_NaN();
     // The faces a step can change, with their input normals (zero where folded in the input).
     std::vector<int> faces;
@@ -402,34 +405,42 @@ private:
     flip_guard_ = Flip_guard(std::move(corners), std::move(input_cross));
   }
 
-  // The ratio test of trust-region methods, per vertex: ρ = (actual decrease of F) /
-  // (decrease predicted by the last program). Vertices held back against a flip keep the
-  // bound they were held at.
+  // The ratio test of trust-region methods: ρ = (actual decrease of F) / (decrease predicted
+  // by the last program). Below 1/4 the region's factor halves; above 3/4 it doubles if some
+  // vertex used its whole radius. Holds relax.
   void adapt_trust_region(double value)
   {
     const double actual = previous_value_ - value;
     const double rho = actual / predicted_decrease_;
     previous_value_ = value;
-    if (!(predicted_decrease_ > 0) || !std::isfinite(rho))
+    for (std::size_t i = 0; i < hold_.size(); ++i)
+      if (!restrained_[i])
+        hold_[i] *= 2;
+    // Without a prediction (the first step, or a step scaled against flips), only a rise of F
+    // says something: the step was too long.
+    if (!(predicted_decrease_ > 0) || !std::isfinite(rho)) {
+      if (actual < 0)
+        trust_factor_ = (std::max)(0.5 * trust_factor_, 1.0 / 1024);
       return;
-    for (std::size_t i = 0; i < radius_.size(); ++i) {
-      if (restrained_[i])
-        continue;
-      if (rho < 0.25)
-        radius_[i] *= 0.5;
-      else if (rho > 0.75 && std::abs(applied_[i]) >= 0.99 * radius_[i])
-        radius_[i] *= 2;
     }
+    bool bound_used = false;
+    for (std::size_t i = 0; i < radius_.size() && !bound_used; ++i)
+      bound_used = !restrained_[i] && std::abs(applied_[i]) >= 0.99 * radius_[i];
+    if (rho < 0.25)
+      trust_factor_ = (std::max)(0.5 * trust_factor_, 1.0 / 1024);
+    else if (rho > 0.75 && bound_used)
+      trust_factor_ = (std::min)(2 * trust_factor_, 64.0);
   }
 
-  // |x_i| <= r_i, within [2^-10, 4] times eq. 16's bound at the current mesh: beyond a few
-  // edge lengths the linearisation of the nodes means little; the floor lets a vertex that
-  // was held back move again.
+  // |x_i| <= r_i, at most four times eq. 16's bound plus ē (beyond a few edge lengths the
+  // linearisation of the nodes means little) and at least 1/1024 of it (a held vertex can move
+  // again).
   void set_step_bounds()
   {
     for (std::size_t i = 0; i < radius_.size(); ++i) {
       const double eq16 = 0.5 * shortest_edge(region_.movable[i]);
-      radius_[i] = (std::min)((std::max)(radius_[i], eq16 / 1024), 4 * eq16 + mean_edge_length_);
+      const double r = (std::min)(trust_factor_ * eq16, hold_[i]);
+      radius_[i] = (std::min)((std::max)(r, eq16 / 1024), 4 * eq16 + mean_edge_length_);
       solver_.set_l(i, -radius_[i]);
       solver_.set_u(i, radius_[i]);
     }
@@ -441,9 +452,10 @@ private:
                                     Fairing_report& report)
   {
     std::vector<double> x(region_.movable.size(), 0.0);
-    // Successive programs are alike: start from the previous solution and its active set.
-    if (previous_solution_.size() == x.size())
-      solver_.set_warm_start(previous_solution_);
+    // Successive programs are alike: start from the previous step and its active set (the
+    // entries on or beyond the new bounds).
+    if (previous_step_.size() == x.size())
+      solver_.set_warm_start(previous_step_);
     step.solver = solver_.solve(x.begin());
     if (!usable(step.solver, x)) {
       report.history.push_back(step);
@@ -451,7 +463,6 @@ private:
                                 std::to_string(iteration + 1) + ": " + step.solver.message,
                             report);
     }
-    previous_solution_ = x;
     step.max_displacement = max_abs(x);
     return x;
   }
@@ -515,6 +526,7 @@ private:
         place(i, x[i]);
       flip_guard_.flipped_faces(moved, flipped);
     }
+    const double wanted = max_abs(x);
     // Scaled down vertex by vertex: halved up to ten times, then not moved.
     std::vector<double> scale(n, 1.0);
     std::vector<int> scaled_in_round(n, -1);
@@ -537,8 +549,8 @@ private:
       step.step_scale = (std::min)(step.step_scale, scale[i]);
       if (restrained_[i]) {
         ++step.restrained_vertices;
-        // Held at what it could take, but free to move again later.
-        radius_[i] = std::abs(x[i]);
+        // Held at what it could take; the hold relaxes in the next steps.
+        hold_[i] = std::abs(x[i]);
       }
     }
     for (std::size_t i = 0; i < n; ++i) {
@@ -547,18 +559,37 @@ private:
           Point(p[0], p[1], p[2]));
     }
     applied_ = x;
+    previous_step_ = x;
     step.max_displacement = max_abs(x);
     step.relative_max_displacement = step.max_displacement / mean_edge_length_;
+    // Blocked: the program wanted a move that counts, and no vertex could take any of it.
+    blocked_ =
+        step.max_displacement == 0 && wanted / mean_edge_length_ >= options_.convergence_threshold;
     // The program predicts the decrease of F for its own solution: not for a scaled one.
     predicted_decrease_ = step.step_scale == 1 ? step.target_value - step.solver.objective_value
                                                : std::numeric_limits<double>::quiet_NaN();
   }
 
-  // Eq. 17 on the step taken, provided it is the program's solution (not scaled against a
-  // flip).
-  bool converged(const Fairing_report::Iteration& step) const
+  // Eq. 17 on the step taken. A vertex held back against a flip counts with the displacement
+  // it was given: where a face around it would flip under any move, the no-flip rule holds it,
+  // and the others converge around it. Or a stationary F: over the last three steps, each below
+  // 10 ε ē, F fell by less than 10^-3 of itself per step. Nodes that switch edges from one model to
+  // the next can keep the steps from shrinking below ε ē while nothing changes any more (a limit
+  // cycle of steps of a thousandth of an edge), or the Willmore energy of a folded triangle can
+  // creep on without end.
+  bool converged(const std::vector<Fairing_report::Iteration>& history) const
   {
-    return step.step_scale == 1 && step.relative_max_displacement < options_.convergence_threshold;
+    if (history.back().relative_max_displacement < options_.convergence_threshold)
+      return true;
+    const std::size_t k = history.size();
+    if (k < 4)
+      return false;
+    for (std::size_t i = k - 3; i < k; ++i)
+      if (!(history[i].relative_max_displacement < 10 * options_.convergence_threshold))
+        return false;
+    // history[i].target_value is F before step i: F after the last step is not known yet.
+    const double first = history[k - 4].target_value, last = history[k - 1].target_value;
+    return first - last <= 3e-3 * std::abs(last);
   }
 
   // ---------------------------------------------------------------------------------------
@@ -612,10 +643,13 @@ private:
   Raw_model model_;
   std::vector<Desired_line> desired_;
   std::vector<std::pair<vertex_descriptor, Point>> checkpoint_;
-  std::vector<double> previous_solution_;
+  std::vector<double> previous_step_;
   std::vector<Vec3> energy_normals_;
   Flip_guard flip_guard_;
-  std::vector<double> radius_;   // trust radius of each movable vertex
+  std::vector<double> radius_;   // trust radius of each movable vertex in the current program
+  std::vector<double> hold_;     // its hold after a step that would have flipped a face
+  double trust_factor_ = 1;      // μ
+  bool blocked_ = false;         // the last step could move no vertex
   std::vector<char> restrained_; // held back against a flip in the last step
   std::vector<double> applied_;  // the last step taken
   double predicted_decrease_ = std::numeric_limits<double>::quiet_NaN();
