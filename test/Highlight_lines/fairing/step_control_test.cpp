@@ -14,6 +14,7 @@
 #include <cmath>
 #include <limits>
 #include <set>
+#include <type_traits>
 #include <vector>
 
 namespace {
@@ -29,7 +30,7 @@ double hood(double x, double y)
 }
 
 // A hood (n x n grid over [-1, 1]^2, jittered) with a smooth dent of `depth` around the origin.
-Surface_mesh dented_hood(int n, double depth, double jitter = 0.25)
+Soup dented_hood_soup(int n, double depth, double jitter = 0.25)
 {
   Soup soup = grid(n, 2.0 / n, -1, -1, hood, jitter, 17);
   for (Point& p : soup.points) {
@@ -37,7 +38,12 @@ Surface_mesh dented_hood(int n, double depth, double jitter = 0.25)
     if (r2 < 1)
       p = Point(p.x(), p.y(), p.z() - depth * (1 - r2) * (1 - r2) * (1 - r2));
   }
-  return to_mesh<Surface_mesh>(soup);
+  return soup;
+}
+
+Surface_mesh dented_hood(int n, double depth, double jitter = 0.25)
+{
+  return to_mesh<Surface_mesh>(dented_hood_soup(n, depth, jitter));
 }
 
 std::vector<Face> faces_within(const Surface_mesh& mesh, double radius)
@@ -176,6 +182,46 @@ std::vector<Face> two_rings(const Surface_mesh& mesh)
     for (Face f : CGAL::faces_around_target(mesh.halfedge(w), mesh))
       faces.insert(f);
   return std::vector<Face>(faces.begin(), faces.end());
+}
+
+// The same on a Polyhedron_3: the held-back vertices are reported, and the fairing ends where the
+// Surface_mesh one does.
+TEST(StepControl, HoldingBackWorksOnAPolyhedron)
+{
+  const Soup soup = dented_hood_soup(24, 0.02);
+  Surface_mesh surface_mesh = to_mesh<Surface_mesh>(soup);
+  Polyhedron polyhedron = to_mesh<Polyhedron>(soup);
+  auto disturb = [](int call, std::vector<double>& x) {
+    if (call == 1)
+      x[x.size() / 2] = 100.0;
+  };
+  auto fair = [&](auto& mesh) {
+    typedef std::remove_reference_t<decltype(mesh)> Mesh;
+    std::vector<typename boost::graph_traits<Mesh>::face_descriptor> region;
+    for (auto f : faces(mesh)) {
+      bool inside = true;
+      for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh)) {
+        const Point p = get(CGAL::vertex_point, mesh, v);
+        inside = inside && p.x() * p.x() + p.y() * p.y() < 0.25;
+      }
+      if (inside)
+        region.push_back(f);
+    }
+    Meddling_solver solver;
+    solver.meddle = disturb;
+    return CGAL::fair_with_highlight_lines(mesh, region, lights_above,
+                                           HLP::qp_solver(std::ref(solver)));
+  };
+  const HL::Fairing_report on_polyhedron = fair(polyhedron);
+  const HL::Fairing_report on_surface_mesh = fair(surface_mesh);
+  EXPECT_TRUE(on_polyhedron.converged()) << HL::to_string(on_polyhedron.status);
+  ASSERT_FALSE(on_polyhedron.history.empty());
+  EXPECT_GE(on_polyhedron.history.front().resolves, 1u);
+  EXPECT_GE(on_polyhedron.history.front().restrained_vertices, 1u);
+  EXPECT_LE(on_polyhedron.history.front().restrained_vertices, 12u);
+  EXPECT_NEAR(on_polyhedron.history.back().target_value,
+              on_surface_mesh.history.back().target_value,
+              1e-6 * on_surface_mesh.history.back().target_value);
 }
 
 // A solver whose every solution after the first iteration sends the only movable vertex a
