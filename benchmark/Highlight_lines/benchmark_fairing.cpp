@@ -21,7 +21,8 @@
 //   xu_flow   surface_diffusion_flow.h: ∂V/∂t = N Δ_B H, border + one-ring held
 //   ours      CGAL::fair_with_highlight_lines(mesh, region, lights), default parameters
 //   ours_mc   the same with fairness_energy(Fairness_energy::MEAN_CURVATURE)
-// All three move exactly the movable vertices of the region (fair_with_highlight_lines()'s
+//   ours_cv   the same with fairness_energy(Fairness_energy::CURVATURE_VARIATION)
+// All of them move exactly the movable vertices of the region (fair_with_highlight_lines()'s
 // definition).
 //
 // Counters (measures defined in fairing_quality.h): `movable`, `iterations`, `dev_ogh` and
@@ -242,8 +243,15 @@ Case& get_case(std::size_t index)
 // ---------------------------------------------------------------------------------------------
 // Methods
 
-enum Method { PMP_FAIR, XU_FLOW, OURS, OURS_MEAN_CURVATURE, NUMBER_OF_METHODS };
-const char* method_names[] = {"pmp_fair", "xu_flow", "ours", "ours_mc"};
+enum Method {
+  PMP_FAIR,
+  XU_FLOW,
+  OURS,
+  OURS_MEAN_CURVATURE,
+  OURS_CURVATURE_VARIATION,
+  NUMBER_OF_METHODS
+};
+const char* method_names[] = {"pmp_fair", "xu_flow", "ours", "ours_mc", "ours_cv"};
 
 struct Run
 {
@@ -270,7 +278,9 @@ Run run_method(Method method, const Case& c, Mesh& mesh)
     const HL::Fairing_report r = CGAL::fair_with_highlight_lines(
         mesh, c.region, c.lights,
         HLP::fairness_energy(method == OURS ? HL::Fairness_energy::WILLMORE
-                                            : HL::Fairness_energy::MEAN_CURVATURE));
+                             : method == OURS_MEAN_CURVATURE
+                                 ? HL::Fairness_energy::MEAN_CURVATURE
+                                 : HL::Fairness_energy::CURVATURE_VARIATION));
     run.iterations = r.iterations;
     run.converged = r.converged();
     for (const HL::Fairing_report::Iteration& step : r.history)
@@ -366,7 +376,8 @@ void print_table(std::ostream& out)
                   "", "time ms", "x pmp", "iters", "ogh rms/e", "ogh max/e", "gt rms/e", "gt max/e",
                   "willmore", "willm. N", "jump deg", "dist/dep", "nodes/unm.");
     out << line;
-    for (const char* row : {"input", "truth", "pmp_fair", "xu_flow", "ours", "ours_mc"}) {
+    for (const char* row :
+         {"input", "truth", "pmp_fair", "xu_flow", "ours", "ours_mc", "ours_cv"}) {
       auto it = rows.find(row);
       if (it == rows.end())
         continue;
@@ -388,7 +399,7 @@ void print_table(std::ostream& out)
       out << line;
     }
     // The goals of the comparison.
-    for (const char* ours : {"ours", "ours_mc"}) {
+    for (const char* ours : {"ours", "ours_mc", "ours_cv"}) {
       if (!(rows.count(ours) && rows.count("pmp_fair") && rows.count("xu_flow")))
         continue;
       const Measures &o = rows[ours], &p = rows["pmp_fair"], &x = rows["xu_flow"];

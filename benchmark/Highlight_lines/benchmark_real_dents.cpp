@@ -38,11 +38,13 @@
 // the cases.
 //
 // Methods, each on a fresh copy of the dented mesh:
-//   pmp_fair  CGAL::Polygon_mesh_processing::fair(mesh, movable vertices), default parameters
-//             (bi-Laplacian, cotangent weights; continuity 1)
-//   xu_flow   surface_diffusion_flow.h with its default options (as benchmark_fairing.cpp)
-//   ours      CGAL::fair_with_highlight_lines(mesh, region, lights), default parameters
-//   ours_mc   the same with fairness_energy(Fairness_energy::MEAN_CURVATURE)
+//   pmp_fair     CGAL::Polygon_mesh_processing::fair(mesh, movable vertices), default
+//                parameters (bi-Laplacian, cotangent weights; continuity 1)
+//   pmp_fair_c2  the same with fairing_continuity(2) (tri-Laplacian: curvature-continuous)
+//   xu_flow      surface_diffusion_flow.h with its default options (as benchmark_fairing.cpp)
+//   ours         CGAL::fair_with_highlight_lines(mesh, region, lights), default parameters
+//   ours_mc      the same with fairness_energy(Fairness_energy::MEAN_CURVATURE)
+//   ours_cv      the same with fairness_energy(Fairness_energy::CURVATURE_VARIATION)
 // The movable vertices are HL::movable_vertices() of the region (fair_with_highlight_lines()'s
 // definition).
 //
@@ -91,8 +93,16 @@ namespace HL = CGAL::Highlight_lines;
 namespace HLP = CGAL::Highlight_lines::parameters;
 namespace HB = Highlight_lines_benchmark;
 
-enum Method { PMP_FAIR, XU_FLOW, OURS, OURS_MEAN_CURVATURE, NUMBER_OF_METHODS };
-const char* method_names[] = {"pmp_fair", "xu_flow", "ours", "ours_mc"};
+enum Method {
+  PMP_FAIR,
+  PMP_FAIR_C2,
+  XU_FLOW,
+  OURS,
+  OURS_MEAN_CURVATURE,
+  OURS_CURVATURE_VARIATION,
+  NUMBER_OF_METHODS
+};
+const char* method_names[] = {"pmp_fair", "pmp_fair_c2", "xu_flow", "ours", "ours_mc", "ours_cv"};
 
 struct Options
 {
@@ -132,8 +142,10 @@ Run run_method(Method method, const HB::Real_dent_case& c,
   Run run;
   switch (method) {
   case PMP_FAIR:
+  case PMP_FAIR_C2:
     run.iterations = 1;
-    run.converged = CGAL::Polygon_mesh_processing::fair(mesh, movable);
+    run.converged = CGAL::Polygon_mesh_processing::fair(
+        mesh, movable, CGAL::parameters::fairing_continuity(method == PMP_FAIR ? 1u : 2u));
     if (!run.converged) {
       run.produced = false;
       run.reason = "PMP::fair returned false";
@@ -149,7 +161,9 @@ Run run_method(Method method, const HB::Real_dent_case& c,
     const HL::Fairing_report r = CGAL::fair_with_highlight_lines(
         mesh, c.region, c.lights,
         HLP::fairness_energy(method == OURS ? HL::Fairness_energy::WILLMORE
-                                            : HL::Fairness_energy::MEAN_CURVATURE));
+                             : method == OURS_MEAN_CURVATURE
+                                 ? HL::Fairness_energy::MEAN_CURVATURE
+                                 : HL::Fairness_energy::CURVATURE_VARIATION));
     run.iterations = r.iterations;
     run.status = HL::to_string(r.status);
     run.converged = r.converged();
@@ -189,7 +203,7 @@ Outcome evaluate(Method method, const HB::Real_dent_case& c, const HB::Region_in
                  const std::vector<Mesh::Face_index>& folded, int repetitions)
 {
   Outcome o;
-  if (method == PMP_FAIR && !movable_error.empty()) {
+  if ((method == PMP_FAIR || method == PMP_FAIR_C2) && !movable_error.empty()) {
     o.reason = "no movable vertices: " + movable_error;
     return o;
   }
@@ -269,7 +283,8 @@ std::string flips_text(std::size_t flips, std::size_t of_folded)
 
 struct Summary
 {
-  std::size_t cases = 0, produced = 0, converged = 0, flips = 0, flips_of_folded = 0, outside = 0;
+  std::size_t cases = 0, produced = 0, converged = 0, flips = 0, flips_of_folded = 0, outside = 0,
+              worse_than_input = 0;
   std::vector<double> iterations, rms_depth, line_deviation, x_pmp;
 };
 
@@ -348,12 +363,13 @@ void print_case(std::ostream& out, const HB::Real_dent_case& c, const HB::Region
     row(method_names[m], outcomes[std::size_t(m)], true);
 }
 
-void add_to_summary(Summary& s, const Outcome& o)
+void add_to_summary(Summary& s, const Outcome& o, const Outcome& input)
 {
   ++s.cases;
   if (!o.produced)
     return;
   ++s.produced;
+  s.worse_than_input += o.rms_depth > input.rms_depth ? 1 : 0;
   s.converged += o.converged ? 1 : 0;
   s.iterations.push_back(double(o.iterations));
   s.rms_depth.push_back(o.rms_depth);
@@ -365,16 +381,18 @@ void add_to_summary(Summary& s, const Outcome& o)
   s.outside += o.outside_moved;
 }
 
-// `patches`: "all" or "smooth", the cases summarised.
+// `patches`: the cases summarised ("all", "smooth", "1 ē", "0.3 ē").
 void print_summary(std::ostream& out, const char* patches,
                    const std::map<std::string, Summary>& summaries)
 {
   out << "\n### Summary, " << patches
       << " patches (medians over the cases where the method produced a mesh)\n\n"
       << "| method | patches | cases | produced % | converged % | median iters | max iters | "
-         "median rms/depth | median dev/ē | median x pmp | total flips | any outside moved |\n"
-      << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const char* name : {"input", "pmp_fair", "xu_flow", "ours", "ours_mc"}) {
+         "median rms/depth | median dev/ē | median x pmp | total flips | any outside moved | "
+         "rms > input |\n"
+      << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const char* name :
+       {"input", "pmp_fair", "pmp_fair_c2", "xu_flow", "ours", "ours_mc", "ours_cv"}) {
     auto it = summaries.find(name);
     if (it == summaries.end())
       continue;
@@ -392,7 +410,7 @@ void print_summary(std::ostream& out, const char* patches,
         << " | " << (is_input ? "" : fixed(median(s.x_pmp), 2)) << " | "
         << flips_text(s.flips, s.flips_of_folded) << " | "
         << (is_input ? "" : (s.outside > 0 ? "YES (" + std::to_string(s.outside) + ")" : "no"))
-        << " |\n";
+        << " | " << (is_input ? "" : std::to_string(s.worse_than_input)) << " |\n";
   }
 }
 
@@ -403,7 +421,8 @@ void print_legend(std::ostream& out)
          "of meshes with too few smooth ones); rms/depth: RMS distance of the movable vertices "
          "to the undented surface / dent depth; dev/ē: RMS distance of the highlight nodes "
          "inside the region to the undented surface's lines, in local mean edge lengths; x pmp: "
-         "median time / PMP::fair's median time on the same case; status: "
+         "median time / PMP::fair's median time on the same case; rms > input: cases where the "
+         "method ended further from the undented surface than the dented input; status: "
          "HL::to_string(Fairing_report::Status), conv: converged)\n";
 }
 
@@ -472,7 +491,7 @@ int main(int argc, char** argv)
       << (options.jitter > 0 ? "; tangential jitter up to " + general(options.jitter) + " ē_g"
                              : std::string())
       << ")\n";
-  std::map<std::string, Summary> summaries, smooth_summaries;
+  std::map<std::string, Summary> summaries, smooth_summaries, deep_summaries, shallow_summaries;
   HB::Real_dent_options dent_options;
   dent_options.max_centres = options.centres;
   dent_options.jitter = options.jitter;
@@ -550,17 +569,21 @@ int main(int argc, char** argv)
           o.x_pmp = o.seconds / pmp.seconds;
       print_case(out, c, info, movable, movable_error, quality, input, truth, outcomes);
       out.flush();
-      for (auto* s : {&summaries, &smooth_summaries}) {
-        if (s == &smooth_summaries && !c.smooth)
+      const bool deep = c.dent_depth >= 0.99 * c.mean_edge_length;
+      for (auto* s : {&summaries, &smooth_summaries, &deep_summaries, &shallow_summaries}) {
+        if ((s == &smooth_summaries && !c.smooth) || (s == &deep_summaries && !deep) ||
+            (s == &shallow_summaries && deep))
           continue;
-        add_to_summary((*s)["input"], input);
+        add_to_summary((*s)["input"], input, input);
         for (int m = 0; m < NUMBER_OF_METHODS; ++m)
-          add_to_summary((*s)[method_names[m]], outcomes[std::size_t(m)]);
+          add_to_summary((*s)[method_names[m]], outcomes[std::size_t(m)], input);
       }
     }
   }
   print_summary(out, "all", summaries);
   print_summary(out, "smooth", smooth_summaries);
+  print_summary(out, "1 ē dents", deep_summaries);
+  print_summary(out, "0.3 ē dents", shallow_summaries);
   out << "\n(region triangles of the dented inputs, over the " << cases_total
       << " cases: smallest corner " << fixed(smallest_corner, 2) << "°"
       << (smallest_corner_case.empty() ? std::string() : " (" + smallest_corner_case + ")") << "; "

@@ -66,6 +66,9 @@ const char* usage =
     "  --iterations N        iteration bound (default 50)\n"
     "  --mean-curvature      fair with the mean curvature energy (the normal part of the\n"
     "                        Willmore energy; for meshes with slivers or folded triangles)\n"
+    "  --curvature-variation fair with the variation of the mean curvature (continues the\n"
+    "                        surface's curvature across the region's border: the closest\n"
+    "                        repair of scanned and CAD surfaces)\n"
     "  --detect              automatic mode: find the irregular regions of the whole mesh\n"
     "                        (CGAL::detect_and_fair_highlight_line_irregularities), fair each,\n"
     "                        and write PREFIX_regions.png (before / after, regions tinted: red\n"
@@ -128,6 +131,8 @@ Options parse(int argc, char** argv)
       o.show_irregularities = true;
     else if (a == "--mean-curvature")
       o.energy = HL::Fairness_energy::MEAN_CURVATURE;
+    else if (a == "--curvature-variation")
+      o.energy = HL::Fairness_energy::CURVATURE_VARIATION;
     else if (a == "--max-regions") {
       const double n = number(i, argc, argv);
       if (!(n >= 1))

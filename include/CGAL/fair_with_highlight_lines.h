@@ -186,7 +186,8 @@ less than `10^-3` of itself per step), or after the iteration bound.
   get no target.
 - *q_fair* is the discrete Willmore energy of the region with the standard cotangent formula
   `K = 1/(2A) Σ (cot α + cot β)(V_i − V_j)` (eq. 8 as printed lacks the factor 1/2), weights
-  held fixed during an iteration (or its normal part, `fairness_energy`). *q_diff* is eq. 10–14 in
+  held fixed during an iteration (or, with `fairness_energy`, its normal part or the variation of
+  the mean curvature: see `Highlight_lines::Fairness_energy`). *q_diff* is eq. 10–14 in
 Gauss–Newton form, divided by `area(R)^{3/2}` so that the result commutes with uniform scaling of
 mesh and lights.
 
@@ -208,8 +209,9 @@ the vertex points} \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`} \cgal
     \cgalParamNBegin{Highlight_lines::parameters::difference_weight} \cgalParamDescription{ω2}
 \cgalParamDefault{1} \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::fairness_energy} \cgalParamDescription{the
-fairness term, a `Highlight_lines::Fairness_energy`: the Willmore energy of the paper, or its
-normal part (the squared mean curvature), which slivers and folded triangles do not dominate}
+fairness term, a `Highlight_lines::Fairness_energy`: the Willmore energy of the paper, its
+normal part (the squared mean curvature), which slivers and folded triangles do not dominate, or
+the variation of the mean curvature (curvature-continuous; the closest repair of real surfaces)}
 \cgalParamDefault{`Highlight_lines::Fairness_energy::WILLMORE`} \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::convergence_threshold} \cgalParamDescription{ε of
 eq. 17} \cgalParamDefault{0.001} \cgalParamNEnd
@@ -287,8 +289,9 @@ fair_with_highlight_lines(TriangleMesh& tm, const FaceRange& region,
     bad("number_of_iterations must be at least 1");
   options.max_iterations = std::size_t(iterations);
   if (options.fairness_energy != HL::Fairness_energy::WILLMORE &&
-      options.fairness_energy != HL::Fairness_energy::MEAN_CURVATURE)
-    bad("fairness_energy must be Fairness_energy::WILLMORE or Fairness_energy::MEAN_CURVATURE "
+      options.fairness_energy != HL::Fairness_energy::MEAN_CURVATURE &&
+      options.fairness_energy != HL::Fairness_energy::CURVATURE_VARIATION)
+    bad("fairness_energy must be Fairness_energy::WILLMORE, MEAN_CURVATURE or CURVATURE_VARIATION "
         "(got the value " +
         std::to_string(static_cast<int>(options.fairness_energy)) + ")");
   if (!(options.neighborhood_rings >= 2))

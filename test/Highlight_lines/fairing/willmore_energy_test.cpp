@@ -1,5 +1,7 @@
 // §3.4, fairness function: the discrete Willmore energy and its exact quadratic form in the
-// normal displacements of the movable vertices.
+// normal displacements of the movable vertices; and the curvature variation energy (beyond the
+// paper), likewise.
+#include <CGAL/Highlight_lines/internal/curvature_variation_energy.h>
 #include <CGAL/Highlight_lines/internal/willmore_energy.h>
 
 #include <Eigen/Dense>
@@ -519,6 +521,208 @@ TEST(WillmoreEnergy, DegenerateTriangleAroundAnEnergyVertexThrows)
   }
   // Degenerate triangles away from the energy vertices do not matter.
   EXPECT_NO_THROW(freeze_willmore_weights(positions, {{0, 1, 3}, {0, 2, 1}}, {3}));
+}
+
+// ---------------------------------------------------------------------------------------------
+// The curvature variation energy E = ℓ² Σ_edges c_ij (H_i - H_j)², H = K · N.
+
+std::vector<std::vector<int>> neighbours_of_mesh(const Mesh& m)
+{
+  std::vector<std::vector<int>> out(m.positions.size());
+  for (const Triangle& t : m.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[std::size_t(k)], b = t[std::size_t((k + 1) % 3)];
+      for (auto [u, w] : {std::pair<int, int>(a, b), std::pair<int, int>(b, a)})
+        if (std::find(out[std::size_t(u)].begin(), out[std::size_t(u)].end(), w) ==
+            out[std::size_t(u)].end())
+          out[std::size_t(u)].push_back(w);
+    }
+  return out;
+}
+
+// The energy vertices of a problem on the grid: interior vertices whose neighbours are interior
+// too (their H need complete rings).
+Problem variation_problem(std::mt19937& rng, int n)
+{
+  Problem p;
+  p.mesh = grid(n, rng, [](double x, double y) { return 0.3 * std::sin(2 * x) * std::cos(3 * y); });
+  const int side = 2 * n + 1;
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int j = 2; j + 2 < side; ++j)
+    for (int i = 2; i + 2 < side; ++i)
+      p.energy_vertices.push_back(j * side + i);
+  for (int v = 0; v < int(p.mesh.positions.size()); ++v)
+    if (rng() % 3 != 0) {
+      p.movable.push_back(v);
+      p.directions.push_back(unit({u(rng), u(rng), u(rng) + 2}));
+    }
+  return p;
+}
+
+Frozen_curvature_variation frozen_variation(const Problem& p, double length_scale)
+{
+  const auto neighbours = neighbours_of_mesh(p.mesh);
+  return freeze_curvature_variation(
+      p.mesh.positions, p.mesh.triangles, p.energy_vertices,
+      [&](int v, std::vector<int>& out) {
+        out.insert(out.end(), neighbours[std::size_t(v)].begin(), neighbours[std::size_t(v)].end());
+      },
+      length_scale);
+}
+
+// Fixed unit normals per frozen row (any will do for the algebra).
+std::vector<Vec3> row_normals(const Frozen_curvature_variation& frozen)
+{
+  std::vector<Vec3> normals;
+  for (int v : frozen.weights.energy_vertices)
+    normals.push_back(unit({0.1 * std::sin(double(v)), 0.2 * std::cos(double(v)), 1}));
+  return normals;
+}
+
+// E at `positions` with the frozen weights and normals, edge by edge: every edge of the mesh
+// with an end among the energy vertices, once; c_ij from the weights of an energy end.
+double direct_variation(const Problem& p, const Frozen_curvature_variation& frozen,
+                        const std::vector<Vec3>& normals, const std::vector<Vec3>& positions)
+{
+  const auto& w = frozen.weights;
+  auto H = [&](int v) {
+    const int row = frozen.row_of_vertex[std::size_t(v)];
+    return dot(mean_curvature_normal(w, std::size_t(row), positions), normals[std::size_t(row)]);
+  };
+  std::vector<char> energy(p.mesh.positions.size(), 0);
+  for (int v : p.energy_vertices)
+    energy[std::size_t(v)] = 1;
+  std::map<std::pair<int, int>, double> edges;
+  for (std::size_t row = 0; row < w.energy_vertices.size(); ++row) {
+    const int i = w.energy_vertices[row];
+    if (!energy[std::size_t(i)])
+      continue;
+    for (const auto& n : w.neighbours[row])
+      edges[std::minmax(i, n.vertex)] = n.weight * w.area[row];
+  }
+  double e = 0;
+  for (const auto& [edge, c] : edges) {
+    const double clamped = std::min(std::max(c, 0.0), 1.0);
+    const double d = H(edge.first) - H(edge.second);
+    e += frozen.scale * clamped * d * d;
+  }
+  return e;
+}
+
+Dense_quadratic dense_variation_quadratic(const Problem& p,
+                                          const Frozen_curvature_variation& frozen,
+                                          const std::vector<Vec3>& normals)
+{
+  std::vector<int> variable_of_vertex(p.mesh.positions.size(), -1);
+  for (std::size_t v = 0; v < p.movable.size(); ++v)
+    variable_of_vertex[std::size_t(p.movable[v])] = int(v);
+  const Eigen::Index n = Eigen::Index(p.movable.size());
+  Dense_quadratic d;
+  d.Q = Eigen::MatrixXd::Zero(n, n);
+  d.c = Eigen::VectorXd::Zero(n);
+  d.r = add_curvature_variation_quadratic(
+      frozen, p.mesh.positions, normals, variable_of_vertex, p.directions,
+      [&](int a, int b, double value) {
+        d.lower_calls += a > b;
+        d.Q(a, b) += value;
+        if (a != b)
+          d.Q(b, a) += value;
+      },
+      [&](int a, double value) { d.c[a] += value; });
+  return d;
+}
+
+TEST(CurvatureVariationEnergy, QuadraticEqualsDirectEvaluationWithFrozenWeights)
+{
+  std::mt19937 rng(11);
+  const Problem p = variation_problem(rng, 4);
+  const double length_scale = 1.7;
+  const Frozen_curvature_variation frozen = frozen_variation(p, length_scale);
+  EXPECT_DOUBLE_EQ(frozen.scale, length_scale * length_scale);
+  const std::vector<Vec3> normals = row_normals(frozen);
+  const Dense_quadratic q = dense_variation_quadratic(p, frozen, normals);
+  EXPECT_EQ(q.lower_calls, 0u);
+  const double r = direct_variation(p, frozen, normals, p.mesh.positions);
+  ASSERT_GT(r, 0);
+  EXPECT_NEAR(q.r, r, 1e-12 * r);
+  for (const double range : {1e-3, 0.05, 0.3})
+    for (int trial = 0; trial < 5; ++trial) {
+      const Eigen::VectorXd x = random_x(rng, p.movable.size(), range);
+      const double direct = direct_variation(p, frozen, normals, displaced(p, x));
+      EXPECT_NEAR(0.5 * x.dot(q.Q * x) + q.c.dot(x) + q.r, direct, 1e-9 * (direct + r)) << range;
+    }
+}
+
+TEST(CurvatureVariationEnergy, HessianIsSymmetricPositiveSemidefinite)
+{
+  std::mt19937 rng(12);
+  const Problem p = variation_problem(rng, 3);
+  const Frozen_curvature_variation frozen = frozen_variation(p, 1.0);
+  const Dense_quadratic q = dense_variation_quadratic(p, frozen, row_normals(frozen));
+  EXPECT_EQ((q.Q - q.Q.transpose()).cwiseAbs().maxCoeff(), 0.0);
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(q.Q);
+  ASSERT_EQ(eigen.info(), Eigen::Success);
+  const double largest = eigen.eigenvalues().cwiseAbs().maxCoeff();
+  EXPECT_GT(largest, 0);
+  EXPECT_GE(eigen.eigenvalues().minCoeff(), -1e-12 * largest);
+}
+
+// Zero on a plane whatever the triangulation (H = 0 everywhere) and on a regularly triangulated
+// cylinder (every vertex alike, so every H alike, though the Willmore energy is not zero there);
+// dimensionless: scaling the mesh and ℓ together changes nothing.
+TEST(CurvatureVariationEnergy, VanishesWhereTheMeanCurvatureIsConstantAndIsScaleFree)
+{
+  std::mt19937 rng(13);
+  Problem plane = variation_problem(rng, 3);
+  for (Vec3& point : plane.mesh.positions)
+    point[2] = 0.2 * point[0] - 0.4 * point[1]; // a tilted plane, jittered triangles
+  {
+    const Frozen_curvature_variation frozen = frozen_variation(plane, 1.0);
+    std::vector<Vec3> normals(frozen.weights.energy_vertices.size(), unit({-0.2, 0.4, 1}));
+    const Dense_quadratic q = dense_variation_quadratic(plane, frozen, normals);
+    EXPECT_LT(q.r, 1e-24);
+  }
+
+  Problem cylinder;
+  const int around = 24, rings = 10;
+  for (int j = 0; j < rings; ++j)
+    for (int i = 0; i < around; ++i) {
+      const double angle = 2 * pi * (i + 0.5 * j) / around; // rings turned by half a step
+      cylinder.mesh.positions.push_back({std::cos(angle), std::sin(angle), 0.25 * j});
+    }
+  for (int j = 0; j + 1 < rings; ++j)
+    for (int i = 0; i < around; ++i) {
+      const int a = j * around + i, b = j * around + (i + 1) % around,
+                c = (j + 1) * around + (i + 1) % around, d = (j + 1) * around + i;
+      cylinder.mesh.triangles.push_back({a, b, d});
+      cylinder.mesh.triangles.push_back({b, c, d});
+    }
+  for (int v = 3 * around; v < 7 * around; ++v)
+    cylinder.energy_vertices.push_back(v);
+  const Frozen_curvature_variation frozen = frozen_variation(cylinder, 1.0);
+  std::vector<Vec3> normals;
+  for (int v : frozen.weights.energy_vertices) {
+    const Vec3& point = cylinder.mesh.positions[std::size_t(v)];
+    normals.push_back(unit({point[0], point[1], 0}));
+  }
+  const double willmore = frozen_willmore_energy(freeze_willmore_weights(cylinder.mesh.positions,
+                                                                         cylinder.mesh.triangles,
+                                                                         cylinder.energy_vertices),
+                                                 cylinder.mesh.positions);
+  EXPECT_GT(willmore, 1);
+  EXPECT_LT(direct_variation(cylinder, frozen, normals, cylinder.mesh.positions), 1e-20 * willmore);
+
+  // Scale: the bumpy patch and three times it, with ℓ three times as long.
+  Problem bumpy = variation_problem(rng, 3), scaled = bumpy;
+  for (Vec3& point : scaled.mesh.positions)
+    point = scale(3, point);
+  const Frozen_curvature_variation small = frozen_variation(bumpy, 0.7),
+                                   large = frozen_variation(scaled, 2.1);
+  const std::vector<Vec3> bumpy_normals = row_normals(small);
+  const double e_small = direct_variation(bumpy, small, bumpy_normals, bumpy.mesh.positions);
+  const double e_large = direct_variation(scaled, large, bumpy_normals, scaled.mesh.positions);
+  EXPECT_GT(e_small, 0);
+  EXPECT_NEAR(e_large, e_small, 1e-12 * e_small);
 }
 
 } // namespace

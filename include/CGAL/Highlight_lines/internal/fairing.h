@@ -9,6 +9,7 @@
 #include <CGAL/Highlight_lines/Highlight_line_sweeper.h>
 #include <CGAL/Highlight_lines/Invalid_input.h>
 #include <CGAL/Highlight_lines/Light_setup.h>
+#include <CGAL/Highlight_lines/internal/curvature_variation_energy.h>
 #include <CGAL/Highlight_lines/internal/desired_highlight_lines.h>
 #include <CGAL/Highlight_lines/internal/difference_energy.h>
 #include <CGAL/Highlight_lines/internal/flip_guard.h>
@@ -311,28 +312,48 @@ private:
   // q_fair of the current mesh.
   double fairness_value()
   {
-    const std::vector<Vec3> points = local_points();
-    return add_willmore_quadratic(
-        freeze_willmore_weights(points, sweeper_.local_mesh().face_vertices,
-                                region_.energy_vertices),
-        points, region_.variable, movable_normals(), [](int, int, double) {}, [](int, double) {},
-        options_.fairness_energy == Fairness_energy::MEAN_CURVATURE ? &energy_normals() : nullptr);
+    return add_fairness_quadratic(
+        movable_normals(), [](int, int, double) {}, [](int, double) {});
   }
 
   // Adds w · q_fair to the solver and the trace of its matrix to `trace`; returns q_fair at 0.
   double add_fairness_terms(const std::vector<Vec3>& directions, double w, double& trace)
   {
-    const std::vector<Vec3> points = local_points();
-    const Frozen_willmore_weights frozen = freeze_willmore_weights(
-        points, sweeper_.local_mesh().face_vertices, region_.energy_vertices);
-    return add_willmore_quadratic(
-        frozen, points, region_.variable, directions,
+    return add_fairness_quadratic(
+        directions,
         [&](int a, int b, double value) {
           solver_.set_P(std::size_t(a), std::size_t(b), w * value);
           if (a == b)
             trace += w * value;
         },
-        [&](int a, double value) { solver_.set_q(std::size_t(a), w * value); },
+        [&](int a, double value) { solver_.set_q(std::size_t(a), w * value); });
+  }
+
+  // q_fair of the chosen energy as a quadratic in the displacements along `directions`, with
+  // the weights frozen at the current mesh, to the sinks; returns its value at x = 0.
+  template <typename AddP, typename AddQ>
+  double add_fairness_quadratic(const std::vector<Vec3>& directions, AddP add_P, AddQ add_q)
+  {
+    const std::vector<Vec3> points = local_points();
+    const auto& faces = sweeper_.local_mesh().face_vertices;
+    if (options_.fairness_energy == Fairness_energy::CURVATURE_VARIATION) {
+      const Frozen_curvature_variation frozen = freeze_curvature_variation(
+          points, faces, region_.energy_vertices,
+          [this](int v, std::vector<int>& out) {
+            for (int i = region_.vertex_neighbor_begin[std::size_t(v)];
+                 i < region_.vertex_neighbor_begin[std::size_t(v) + 1]; ++i)
+              out.push_back(region_.vertex_neighbors[std::size_t(i)]);
+          },
+          length_scale_);
+      std::vector<Vec3> normals;
+      for (int v : frozen.weights.energy_vertices)
+        normals.push_back(sweeper_.vertex_normals().unit_normal(v));
+      return add_curvature_variation_quadratic(frozen, points, normals, region_.variable,
+                                               directions, add_P, add_q);
+    }
+    return add_willmore_quadratic(
+        freeze_willmore_weights(points, faces, region_.energy_vertices), points, region_.variable,
+        directions, add_P, add_q,
         options_.fairness_energy == Fairness_energy::MEAN_CURVATURE ? &energy_normals() : nullptr);
   }
 
