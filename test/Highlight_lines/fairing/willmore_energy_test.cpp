@@ -259,8 +259,10 @@ struct Dense_quadratic
   std::size_t lower_calls = 0;
 };
 
-Dense_quadratic dense_willmore_quadratic(const Problem& p, const Frozen_willmore_weights& frozen,
-                                         const std::vector<Vec3>* normals = nullptr)
+// A quadratic assembled into dense matrices by `assemble(variable_of_vertex, add_P, add_q)`,
+// which returns r.
+template <typename Assemble>
+Dense_quadratic dense_quadratic(const Problem& p, Assemble&& assemble)
 {
   std::vector<int> variable_of_vertex(p.mesh.positions.size(), -1);
   for (std::size_t v = 0; v < p.movable.size(); ++v)
@@ -269,16 +271,25 @@ Dense_quadratic dense_willmore_quadratic(const Problem& p, const Frozen_willmore
   Dense_quadratic d;
   d.Q = Eigen::MatrixXd::Zero(n, n);
   d.c = Eigen::VectorXd::Zero(n);
-  d.r = add_willmore_quadratic(
-      frozen, p.mesh.positions, variable_of_vertex, p.directions,
+  d.r = assemble(
+      variable_of_vertex,
       [&](int a, int b, double value) {
         d.lower_calls += a > b;
         d.Q(a, b) += value;
         if (a != b)
           d.Q(b, a) += value;
       },
-      [&](int a, double value) { d.c[a] += value; }, normals);
+      [&](int a, double value) { d.c[a] += value; });
   return d;
+}
+
+Dense_quadratic dense_willmore_quadratic(const Problem& p, const Frozen_willmore_weights& frozen,
+                                         const std::vector<Vec3>* normals = nullptr)
+{
+  return dense_quadratic(p, [&](const std::vector<int>& variables, auto add_P, auto add_q) {
+    return add_willmore_quadratic(frozen, p.mesh.positions, variables, p.directions, add_P, add_q,
+                                  normals);
+  });
 }
 
 // The fairing's assembly straight into the solver's sink gives the same Q, c and r as the
@@ -613,23 +624,10 @@ Dense_quadratic dense_variation_quadratic(const Problem& p,
                                           const Frozen_curvature_variation& frozen,
                                           const std::vector<Vec3>& normals)
 {
-  std::vector<int> variable_of_vertex(p.mesh.positions.size(), -1);
-  for (std::size_t v = 0; v < p.movable.size(); ++v)
-    variable_of_vertex[std::size_t(p.movable[v])] = int(v);
-  const Eigen::Index n = Eigen::Index(p.movable.size());
-  Dense_quadratic d;
-  d.Q = Eigen::MatrixXd::Zero(n, n);
-  d.c = Eigen::VectorXd::Zero(n);
-  d.r = add_curvature_variation_quadratic(
-      frozen, p.mesh.positions, normals, variable_of_vertex, p.directions,
-      [&](int a, int b, double value) {
-        d.lower_calls += a > b;
-        d.Q(a, b) += value;
-        if (a != b)
-          d.Q(b, a) += value;
-      },
-      [&](int a, double value) { d.c[a] += value; });
-  return d;
+  return dense_quadratic(p, [&](const std::vector<int>& variables, auto add_P, auto add_q) {
+    return add_curvature_variation_quadratic(frozen, p.mesh.positions, normals, variables,
+                                             p.directions, add_P, add_q);
+  });
 }
 
 TEST(CurvatureVariationEnergy, QuadraticEqualsDirectEvaluationWithFrozenWeights)
