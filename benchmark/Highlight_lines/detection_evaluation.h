@@ -151,14 +151,20 @@ inline Detection_score match(const Mesh& mesh, const std::vector<Injected_defect
 /// Whether region `a` is reported before region `b` (the order of the detection's output).
 inline bool stronger(const Irregularity& a, const Irregularity& b)
 {
-  return a.score > b.score;
+  return a.confidence * a.score > b.confidence * b.score;
 }
 
 /// One line about a region: its size and strength.
 inline std::string describe(const Irregularity& r)
 {
   std::ostringstream s;
-  s << r.faces.size() << " faces, score " << std::setprecision(3) << r.score;
+  namespace HL = CGAL::Highlight_lines;
+  s << (r.kind == HL::Irregularity_kind::DENT        ? "dent"
+        : r.kind == HL::Irregularity_kind::BUMP      ? "bump"
+        : r.kind == HL::Irregularity_kind::ELONGATED ? "elongated"
+                                                     : "extended")
+    << ", " << r.faces.size() << " faces, score " << std::setprecision(3) << r.score
+    << ", confidence " << std::setprecision(2) << r.confidence;
   return s.str();
 }
 

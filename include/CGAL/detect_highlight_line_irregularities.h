@@ -36,6 +36,7 @@ struct Detection_options
   double minimum_evidence = 0.5; // fraction of the light setups
   int margin = 2;
   double maximum_incidence_angle = 60; // degrees
+  double sharp_edge_angle = 60;        // degrees
 
   template <typename NamedParameters>
   explicit Detection_options(const NamedParameters& np)
@@ -77,6 +78,67 @@ struct Detection_options
   }
 };
 
+// Whether the vertex `peak` lies below (against `normal`) the quadric height field over its
+// tangent plane fitted to the vertices of `region` farther than 60 % of the region's radius
+// from it; the mean of those vertices if the fit is singular.
+template <typename Local_mesh>
+bool peak_lies_below_fit(const Local_mesh& local, int peak, const vector3::Vec3& normal,
+                         const std::set<int>& region)
+{
+  using namespace vector3;
+  const double* pp = local.point(peak);
+  const Vec3 p{pp[0], pp[1], pp[2]};
+  Vec3 t = std::abs(normal[0]) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+  t = t - dot(t, normal) * normal;
+  t = (1 / norm(t)) * t;
+  const Vec3 u = cross(normal, t);
+  double radius = 0;
+  for (int v : region) {
+    const double* q = local.point(v);
+    radius = (std::max)(radius, norm(Vec3{q[0], q[1], q[2]} - p));
+  }
+  if (!(radius > 0))
+    return false;
+  double m[6][7] = {};
+  double mean = 0;
+  std::size_t count = 0;
+  for (int v : region) {
+    const double* q = local.point(v);
+    const Vec3 d = Vec3{q[0], q[1], q[2]} - p;
+    if (norm(d) < 0.6 * radius)
+      continue;
+    const double x = dot(d, t) / radius, y = dot(d, u) / radius, h = dot(d, normal);
+    const double basis[6] = {1, x, y, x * x, x * y, y * y};
+    for (int i = 0; i < 6; ++i) {
+      for (int j = 0; j < 6; ++j)
+        m[i][j] += basis[i] * basis[j];
+      m[i][6] += basis[i] * h;
+    }
+    mean += h;
+    ++count;
+  }
+  if (count == 0)
+    return false;
+  // Gaussian elimination with partial pivoting; the constant term is the fit at the peak.
+  for (int c = 0; c < 6; ++c) {
+    int pivot = c;
+    for (int r = c + 1; r < 6; ++r)
+      if (std::abs(m[r][c]) > std::abs(m[pivot][c]))
+        pivot = r;
+    if (!(std::abs(m[pivot][c]) > 1e-12 * double(count)))
+      return mean / double(count) > 0;
+    for (int k = 0; k < 7; ++k)
+      std::swap(m[c][k], m[pivot][k]);
+    for (int r = 0; r < 6; ++r)
+      if (r != c) {
+        const double f = m[r][c] / m[c][c];
+        for (int k = 0; k < 7; ++k)
+          m[r][k] -= f * m[c][k];
+      }
+  }
+  return m[0][6] / m[0][0] > 0;
+}
+
 } // namespace internal
 } // namespace Highlight_lines
 
@@ -110,17 +172,32 @@ than `3w/2` to the end of an open line, and samples where the surface normal mak
 `maximum_incidence_angle` with the light plane's normal (near the silhouette, `d` grows without
 bound and lines crowd beyond what the triangulation resolves), are not scored.
 
+<b>Sharp edges.</b> Edges whose two faces' normals make more than 60° (the criterion of
+`Polygon_mesh_processing::detect_sharp_edges()`) are feature lines where the lines kink by
+design: anomalies within one ring of their vertices are not counted, and no region grows
+across them (a region reaches a sharp edge's vertices, never the other side).
+
 <b>The regions.</b> Each anomaly is attached to the mesh vertex nearest to it. Anomalies less
 than `detection_scale` edges apart form a cluster; clusters seen in fewer than a fraction
 `minimum_evidence` of the light setups are discarded as noise (a defect bends the lines of
 every direction; triangulation noise rarely lines up across setups). Each remaining cluster
 grows by `region_margin` rings of edges, clusters that meet merge, and the region is the set
-of faces with a vertex in the grown cluster. Regions are disjoint and written by decreasing
-score.
+of faces with a vertex in the grown cluster. Regions are disjoint.
+
+<b>Defect or design.</b> A dent or a bump is local and round: its anomalies spread over at
+most `2R + 3w` (`R` its radius, up to the scale `3w/2` the measure looks for) in every
+direction. A fillet, a panel joint or a soft crease bends the lines all along its length, and
+a change of shape at a larger scale bends them over a wide area. Each region gets a `kind`
+(`Highlight_lines::Irregularity_kind`: `DENT` or `BUMP` by the side of the smooth quadric its
+surroundings predict on which the strongest anomaly lies, `ELONGATED` or `EXTENDED`) and a
+`confidence` in [0, 1] (the share of the light setups that saw it, lowered for elongated and
+extended regions: see `Highlight_lines::Highlight_line_irregularity::confidence`). Regions are
+written by decreasing `confidence * score`: local defects first, design last.
 
 A defect is only seen where several lines cross it: the lights' spacing and
-`number_of_offsets` set how small a defect can be found. Design features where the lines kink
-on purpose (creases, panel joints) are reported too; restrict the search with `face_range`.
+`number_of_offsets` set how small a defect can be found. Design features that are not sharp
+edges (fillets, panel joints) are reported too, as `ELONGATED` or `EXTENDED` regions of low
+confidence after the local defects; restrict the search with `face_range`.
 
 The measure and the regions are invariant under rigid motions and uniform scalings of the mesh
 and the lights together, and independent of the mesh's face order.
@@ -252,20 +329,42 @@ OutputIterator detect_highlight_line_irregularities(
       choose_parameter(get_parameter(np, HL::internal_np::facing_side_only), true));
 
   const double pi = 3.14159265358979323846;
-  // Unit vertex normals (area-weighted), for the incidence test of the samples.
-  std::vector<Vec3> normals(std::size_t(nv), Vec3{0, 0, 0});
-  for (const auto& f : local.face_vertices) {
-    const double *a = local.point(f[0]), *b = local.point(f[1]), *c = local.point(f[2]);
-    const Vec3 n = cross(Vec3{b[0] - a[0], b[1] - a[1], b[2] - a[2]},
-                         Vec3{c[0] - a[0], c[1] - a[1], c[2] - a[2]});
-    for (int v : f)
-      if (v < nv)
-        normals[std::size_t(v)] = normals[std::size_t(v)] + n;
+  // Unit vertex normals (eq. 3), for the incidence test of the samples.
+  std::vector<Vec3> normals(static_cast<std::size_t>(nv));
+  for (int v = 0; v < nv; ++v) {
+    const auto n = sweeper.vertex_normals().unit_normal(v);
+    normals[std::size_t(v)] = Vec3{n[0], n[1], n[2]};
   }
-  for (Vec3& n : normals) {
-    const double length = norm(n);
-    n = length > 0 ? (1 / length) * n : Vec3{0, 0, 0};
+  // Sharp edges: the angle between the normals of their two faces exceeds
+  // `sharp_edge_angle` (the criterion of PMP::detect_sharp_edges()). The lines kink there by
+  // design: anomalies within one ring of a sharp edge's vertex are not counted, and no region
+  // grows across one.
+  std::vector<char> sharp(static_cast<std::size_t>(nv), 0);
+  {
+    const double cos_sharp = std::cos(options.sharp_edge_angle * pi / 180);
+    std::vector<std::array<int, 2>> edge_faces(local.edge_vertices.size(), {-1, -1});
+    for (std::size_t f = 0; f < nf; ++f)
+      for (int e : local.face_edges[f]) {
+        auto& ef = edge_faces[std::size_t(e)];
+        (ef[0] < 0 ? ef[0] : ef[1]) = int(f);
+      }
+    auto face_normal = [&](int f) {
+      const auto& c = corners[std::size_t(f)];
+      const double *p = local.point(c[0]), *q = local.point(c[1]), *r = local.point(c[2]);
+      const Vec3 n = cross(Vec3{q[0] - p[0], q[1] - p[1], q[2] - p[2]},
+                           Vec3{r[0] - p[0], r[1] - p[1], r[2] - p[2]});
+      const double length = norm(n);
+      return length > 0 ? (1 / length) * n : n;
+    };
+    for (std::size_t e = 0; e < edge_faces.size(); ++e)
+      if (edge_faces[e][1] >= 0 &&
+          dot(face_normal(edge_faces[e][0]), face_normal(edge_faces[e][1])) < cos_sharp)
+        for (int v : local.edge_vertices[e])
+          if (v < nv)
+            sharp[std::size_t(v)] = 1;
   }
+  std::vector<char> near_sharp = sharp;
+  HL::internal::grow_by_rings(HL::internal::Vertex_adjacency(corners, nv), 1, near_sharp);
   const double minimum_facing = std::cos(options.maximum_incidence_angle * pi / 180);
 
   // Only the peaks of the bending along a line count (one per stencil width w): the stencil
@@ -356,6 +455,8 @@ OutputIterator detect_highlight_line_irregularities(
           const double score = (bending[i] - stats.median) / deviation;
           if (!(score > options.threshold) || !is_local_maximum(bending, i, lines[l].is_closed))
             continue;
+          if (near_sharp[std::size_t(sample_vertices[l][i])])
+            continue;
           HL::internal::Anomaly a;
           a.vertex = sample_vertices[l][i];
           a.line = line_id;
@@ -373,7 +474,7 @@ OutputIterator detect_highlight_line_irregularities(
   const std::size_t minimum_setups = (std::max)(
       std::size_t(1), std::size_t(std::ceil(options.minimum_evidence * double(setups) - 1e-9)));
   const auto regions = HL::internal::group_anomalies(corners, nv, anomalies, join_rings,
-                                                     options.margin, minimum_setups);
+                                                     options.margin, minimum_setups, sharp);
   std::vector<HL::Highlight_line_irregularity<TriangleMesh>> found;
   for (const auto& region : regions) {
     if (region.anomalies.empty())
@@ -396,10 +497,63 @@ OutputIterator detect_highlight_line_irregularities(
     irregularity.number_of_anomalies = region.anomalies.size();
     irregularity.number_of_lines = lines_seen.size();
     irregularity.number_of_light_setups = setups_seen.size();
+
+    // The shape of the anomalies: their spread along the two main axes (standard deviations
+    // of the positions of their vertices, principal axes of the covariance).
+    std::set<int> anomaly_vertices;
+    for (std::size_t i : region.anomalies)
+      anomaly_vertices.insert(anomalies[i].vertex);
+    Vec3 mean{0, 0, 0};
+    for (int v : anomaly_vertices) {
+      const double* p = local.point(v);
+      mean = mean + (1.0 / double(anomaly_vertices.size())) * Vec3{p[0], p[1], p[2]};
+    }
+    double c[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+    for (int v : anomaly_vertices) {
+      const double* p = local.point(v);
+      const Vec3 d{p[0] - mean[0], p[1] - mean[1], p[2] - mean[2]};
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          c[i][j] += d[std::size_t(i)] * d[std::size_t(j)] / double(anomaly_vertices.size());
+    }
+    const auto axes = HL::internal::largest_spreads(c);
+    const double w = options.scale * mean_edge;
+    const double length = 4 * axes[0], width = (std::max)(4 * axes[1], w);
+    // A defect is local: the response to one of radius R spreads over R + 3w/2 from its
+    // centre, so a defect up to the detection's scale (R <= 3w/2) spreads its anomalies over
+    // a length of at most 6w. Larger or longer regions are shape at another scale: design.
+    const double slenderness = (std::min)(1.0, std::pow(2 * width / (std::max)(length, 1e-300), 2));
+    const double locality = (std::min)(1.0, std::pow(6 * w / (std::max)(length, 1e-300), 2));
+    irregularity.confidence = double(setups_seen.size()) / double(setups) * slenderness * locality;
+    if (slenderness < 1) {
+      irregularity.kind = HL::Irregularity_kind::ELONGATED;
+    } else if (locality < 1) {
+      irregularity.kind = HL::Irregularity_kind::EXTENDED;
+    } else {
+      // The peak against the smooth surface its surroundings predict: a quadric height
+      // field over the peak's tangent plane, fitted (least squares) to the region's outer
+      // vertices (beyond 60 % of the region's radius from the peak).
+      int peak = 0;
+      double best = -1;
+      for (std::size_t i : region.anomalies)
+        if (anomalies[i].score > best) {
+          best = anomalies[i].score;
+          peak = anomalies[i].vertex;
+        }
+      std::set<int> region_vertices;
+      for (int f : region.faces)
+        for (int v : corners[std::size_t(f)])
+          region_vertices.insert(v);
+      irregularity.kind = HL::internal::peak_lies_below_fit(local, peak, normals[std::size_t(peak)],
+                                                            region_vertices)
+                              ? HL::Irregularity_kind::DENT
+                              : HL::Irregularity_kind::BUMP;
+    }
     found.push_back(std::move(irregularity));
   }
-  std::stable_sort(found.begin(), found.end(),
-                   [](const auto& a, const auto& b) { return a.score > b.score; });
+  std::stable_sort(found.begin(), found.end(), [](const auto& a, const auto& b) {
+    return a.confidence * a.score > b.confidence * b.score;
+  });
   for (auto& irregularity : found)
     *out++ = std::move(irregularity);
   return out;

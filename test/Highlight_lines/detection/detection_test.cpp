@@ -6,6 +6,7 @@
 #include "../../../benchmark/Highlight_lines/detection_evaluation.h"
 
 #include <CGAL/Aff_transformation_3.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Highlight_lines/default_light_setup.h>
 #include <CGAL/Highlight_lines/fairing_building_blocks.h>
 #include <CGAL/detect_and_fair_highlight_line_irregularities.h>
@@ -14,6 +15,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <fstream>
+#include <iostream>
 #include <cmath>
 #include <map>
 #include <random>
@@ -234,6 +237,109 @@ TEST(Detection, RegionsEncloseTheirDefectWithAMargin)
     EXPECT_GE(region->number_of_light_setups, 3u);
     EXPECT_GT(region->score, 5.0);
   }
+}
+
+// --- Defect versus design ------------------------------------------------------------------
+
+// A hood folded along x = 0.1 (a crease of about 70 degrees between the normals), on a
+// regular grid whose column x = 0.1 runs along the crease.
+double folded(double x, double y)
+{
+  return hood(x, y) + (x > 0.1 ? 3 * (x - 0.1) : 0.0);
+}
+
+TEST(Detection, RegionsNeverCrossASharpEdge)
+{
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    HB::Mesh mesh = test::to_mesh<HB::Mesh>(test::grid(80, 2.0 / 80, -1, -1, folded, 0.0, seed));
+    const double e = HB::mean_edge_length(mesh);
+    // Defects centred 1 to 3 edges from the crease: their support lies on both sides.
+    const auto defects = HB::inject_defects(
+        mesh, 2, 5.0, 0.3, seed,
+        [&](HB::vertex_descriptor v) {
+          const double d = std::abs(mesh.point(v).x() - 0.1);
+          return d > e && d < 3 * e;
+        },
+        3);
+    ASSERT_FALSE(defects.empty());
+    // The vertices of the crease: a region may reach them, never the other side.
+    for (const auto& r : detect(mesh)) {
+      bool left = false, right = false;
+      for (auto f : r.faces)
+        for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh)) {
+          left = left || mesh.point(v).x() < 0.1 - 0.5 * e;
+          right = right || mesh.point(v).x() > 0.1 + 0.5 * e;
+        }
+      EXPECT_FALSE(left && right) << "seed " << seed << ": " << HB::describe(r);
+    }
+  }
+}
+
+TEST(Detection, ReportsDentsAndBumpsWithFullConfidenceOnSmoothHoods)
+{
+  std::size_t dents = 0, bumps = 0;
+  for (unsigned seed = 1; seed <= 4; ++seed) {
+    HB::Mesh mesh = smooth_hood(seed);
+    const auto defects = HB::inject_defects(
+        mesh, 3, 5.0, 0.3, seed, [](auto) { return true; }, 6);
+    const auto found = detect(mesh);
+    const auto holds = HB::regions_of_defects(mesh, defects, found);
+    for (std::size_t d = 0; d < defects.size(); ++d) {
+      ASSERT_NE(holds[d], std::size_t(-1));
+      const HB::Irregularity& r = found[holds[d]];
+      EXPECT_EQ(r.kind,
+                defects[d].height < 0 ? HL::Irregularity_kind::DENT : HL::Irregularity_kind::BUMP)
+          << HB::describe(r);
+      EXPECT_GE(r.confidence, 0.8) << HB::describe(r);
+      (defects[d].height < 0 ? dents : bumps) += 1;
+    }
+  }
+  EXPECT_GT(dents, 0u);
+  EXPECT_GT(bumps, 0u);
+}
+
+// The bundled demo (scripts/demo, part 3): the dent fair_with_highlight_lines presses into the
+// Beetle's roof, and the detection of its --detect mode (60 lines, 3 x 4 light setups).
+TEST(Detection, TheDemoRoofDentComesFirst)
+{
+  HB::Mesh mesh;
+  std::ifstream in(std::string(HIGHLIGHT_LINES_DATA_DIR) + "/beetle.off");
+  ASSERT_TRUE(in && CGAL::IO::read_OFF(in, mesh));
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(mesh);
+  const double diagonal =
+      std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                CGAL::square(box.zmax() - box.zmin()));
+  const HB::Point wanted(0.04, box.ymax(), -0.12);
+  HB::vertex_descriptor centre = *vertices(mesh).begin();
+  for (auto v : vertices(mesh))
+    if (CGAL::squared_distance(mesh.point(v), wanted) <
+        CGAL::squared_distance(mesh.point(centre), wanted))
+      centre = v;
+  const HB::Point c = mesh.point(centre);
+  const double radius = 0.6 * 0.07 * diagonal, depth = 0.006 * diagonal;
+  std::vector<std::pair<HB::vertex_descriptor, HB::Point>> moved;
+  for (auto v : vertices(mesh)) {
+    const double r2 = CGAL::squared_distance(mesh.point(v), c) / (radius * radius);
+    if (r2 < 1)
+      moved.emplace_back(v, mesh.point(v) -
+                                depth * (1 - r2) * (1 - r2) * (1 - r2) *
+                                    CGAL::Polygon_mesh_processing::compute_vertex_normal(v, mesh));
+  }
+  for (const auto& m : moved)
+    mesh.point(m.first) = m.second;
+  std::vector<HB::Irregularity> found;
+  CGAL::detect_highlight_line_irregularities(
+      mesh, HL::default_light_setup(mesh, HLP::number_of_lines(60)), std::back_inserter(found),
+      HLP::number_of_offsets(4));
+  ASSERT_FALSE(found.empty());
+  bool first_holds_dent = false;
+  for (auto f : found[0].faces)
+    for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+      first_holds_dent = first_holds_dent || v == centre;
+  for (const auto& r : found)
+    std::cout << HB::describe(r) << "\n";
+  EXPECT_TRUE(first_holds_dent) << HB::describe(found[0]);
+  EXPECT_EQ(found[0].kind, HL::Irregularity_kind::DENT);
 }
 
 // --- Invariances --------------------------------------------------------------------------
