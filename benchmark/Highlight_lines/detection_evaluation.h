@@ -158,13 +158,8 @@ inline bool stronger(const Irregularity& a, const Irregularity& b)
 inline std::string describe(const Irregularity& r)
 {
   std::ostringstream s;
-  namespace HL = CGAL::Highlight_lines;
-  s << (r.kind == HL::Irregularity_kind::DENT        ? "dent"
-        : r.kind == HL::Irregularity_kind::BUMP      ? "bump"
-        : r.kind == HL::Irregularity_kind::ELONGATED ? "elongated"
-                                                     : "extended")
-    << ", " << r.faces.size() << " faces, score " << std::setprecision(3) << r.score
-    << ", confidence " << std::setprecision(2) << r.confidence;
+  s << CGAL::Highlight_lines::to_string(r.kind) << ", " << r.faces.size() << " faces, score "
+    << std::setprecision(3) << r.score << ", confidence " << std::setprecision(2) << r.confidence;
   return s.str();
 }
 

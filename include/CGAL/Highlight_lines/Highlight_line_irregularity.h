@@ -36,6 +36,26 @@ enum class Irregularity_kind {
 /*!
 \ingroup PkgHighlightLinesRef
 
+The name of `kind`, in lower case: "dent", "bump", "elongated" or "extended".
+*/
+inline const char* to_string(Irregularity_kind kind)
+{
+  switch (kind) {
+  case Irregularity_kind::DENT:
+    return "dent";
+  case Irregularity_kind::BUMP:
+    return "bump";
+  case Irregularity_kind::ELONGATED:
+    return "elongated";
+  case Irregularity_kind::EXTENDED:
+    return "extended";
+  }
+  return "unknown";
+}
+
+/*!
+\ingroup PkgHighlightLinesRef
+
 A place where highlight lines bend abnormally, as found by
 `detect_highlight_line_irregularities()`: a face region that encloses the anomalies with a
 margin, ready to be passed to `fair_with_highlight_lines()`.

@@ -34,6 +34,7 @@ enum minimum_bending_t { minimum_bending };
 enum minimum_evidence_t { minimum_evidence };
 enum region_margin_t { region_margin };
 enum maximum_incidence_angle_t { maximum_incidence_angle };
+enum minimum_confidence_t { minimum_confidence };
 } // namespace internal_np
 /// \endcond
 
@@ -100,6 +101,7 @@ CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(minimum_bending_t, minimum_bending)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(minimum_evidence_t, minimum_evidence)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(region_margin_t, region_margin)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(maximum_incidence_angle_t, maximum_incidence_angle)
+CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(minimum_confidence_t, minimum_confidence)
 
 #undef CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER
 

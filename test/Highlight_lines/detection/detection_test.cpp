@@ -298,19 +298,20 @@ TEST(Detection, ReportsDentsAndBumpsWithFullConfidenceOnSmoothHoods)
   EXPECT_GT(bumps, 0u);
 }
 
-// The bundled demo (scripts/demo, part 3): the dent fair_with_highlight_lines presses into the
-// Beetle's roof, and the detection of its --detect mode (60 lines, 3 x 4 light setups).
-TEST(Detection, TheDemoRoofDentComesFirst)
+// The bundled demo (scripts/demo, part 3): the Beetle with the dent fair_with_highlight_lines
+// presses into its roof; `centre` is the dent's centre vertex.
+HB::Mesh demo_beetle(HB::vertex_descriptor& centre)
 {
   HB::Mesh mesh;
   std::ifstream in(std::string(HIGHLIGHT_LINES_DATA_DIR) + "/beetle.off");
-  ASSERT_TRUE(in && CGAL::IO::read_OFF(in, mesh));
+  if (!in || !CGAL::IO::read_OFF(in, mesh))
+    throw std::runtime_error("cannot read the bundled beetle");
   const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(mesh);
   const double diagonal =
       std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
                 CGAL::square(box.zmax() - box.zmin()));
   const HB::Point wanted(0.04, box.ymax(), -0.12);
-  HB::vertex_descriptor centre = *vertices(mesh).begin();
+  centre = *vertices(mesh).begin();
   for (auto v : vertices(mesh))
     if (CGAL::squared_distance(mesh.point(v), wanted) <
         CGAL::squared_distance(mesh.point(centre), wanted))
@@ -327,19 +328,35 @@ TEST(Detection, TheDemoRoofDentComesFirst)
   }
   for (const auto& m : moved)
     mesh.point(m.first) = m.second;
+  return mesh;
+}
+
+bool holds(const HB::Mesh& mesh, const HB::Irregularity& r, HB::vertex_descriptor v)
+{
+  for (auto f : r.faces)
+    for (auto w : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+      if (w == v)
+        return true;
+  return false;
+}
+
+// The detection of the demo's --detect mode (60 lines, 3 x 4 light setups).
+TEST(Detection, TheDemoRoofDentComesFirst)
+{
+  HB::vertex_descriptor centre;
+  const HB::Mesh mesh = demo_beetle(centre);
   std::vector<HB::Irregularity> found;
   CGAL::detect_highlight_line_irregularities(
       mesh, HL::default_light_setup(mesh, HLP::number_of_lines(60)), std::back_inserter(found),
       HLP::number_of_offsets(4));
   ASSERT_FALSE(found.empty());
-  bool first_holds_dent = false;
-  for (auto f : found[0].faces)
-    for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
-      first_holds_dent = first_holds_dent || v == centre;
-  for (const auto& r : found)
-    std::cout << HB::describe(r) << "\n";
-  EXPECT_TRUE(first_holds_dent) << HB::describe(found[0]);
+  EXPECT_TRUE(holds(mesh, found[0], centre)) << HB::describe(found[0]);
   EXPECT_EQ(found[0].kind, HL::Irregularity_kind::DENT);
+  EXPECT_GE(found[0].confidence, 0.5);
+  // Everything else found is the car's design, and says so.
+  for (std::size_t i = 1; i < found.size(); ++i) {
+    EXPECT_LT(found[i].confidence, 0.5) << HB::describe(found[i]);
+  }
 }
 
 // --- Invariances --------------------------------------------------------------------------
@@ -542,6 +559,44 @@ TEST(DetectAndFair, SurfaceMeshAndPolyhedronAgree)
     EXPECT_LT(
         CGAL::squared_distance(v->point(), mesh.point(HB::vertex_descriptor(std::uint32_t(i++)))),
         1e-20);
+}
+
+TEST(DetectAndFair, FairsTheDemoRoofDentAndLeavesTheDesignAlone)
+{
+  HB::vertex_descriptor centre;
+  HB::Mesh mesh = demo_beetle(centre);
+  const HB::Mesh dented = mesh;
+  const auto repairs = CGAL::detect_and_fair_highlight_line_irregularities(
+      mesh, HL::default_light_setup(mesh, HLP::number_of_lines(60)),
+      HLP::combine(HLP::number_of_offsets(4), CGAL::parameters::number_of_iterations(3)));
+  ASSERT_GE(repairs.size(), 2u);
+  EXPECT_TRUE(holds(mesh, repairs[0].irregularity, centre));
+  EXPECT_TRUE(repairs[0].repaired) << repairs[0].failure;
+  EXPECT_FALSE(repairs[0].skipped);
+  std::set<HB::vertex_descriptor> movable;
+  HL::movable_vertices(mesh, repairs[0].irregularity.faces, std::inserter(movable, movable.end()));
+  for (std::size_t i = 1; i < repairs.size(); ++i) {
+    EXPECT_TRUE(repairs[i].skipped) << HB::describe(repairs[i].irregularity);
+    EXPECT_FALSE(repairs[i].repaired);
+    EXPECT_NE(repairs[i].failure.find("skipped"), std::string::npos);
+  }
+  // Nothing but the roof moved.
+  for (auto v : vertices(mesh))
+    if (movable.count(v) == 0) {
+      EXPECT_EQ(mesh.point(v), dented.point(v));
+    }
+  // With every region asked for, the design is faired too (the old behaviour).
+  HB::Mesh all = dented;
+  const auto every = CGAL::detect_and_fair_highlight_line_irregularities(
+      all, HL::default_light_setup(all, HLP::number_of_lines(60)),
+      HLP::combine(HLP::number_of_offsets(4), HLP::minimum_confidence(0.0),
+                   CGAL::parameters::number_of_iterations(1)));
+  ASSERT_EQ(every.size(), repairs.size());
+  for (const auto& repair : every)
+    EXPECT_FALSE(repair.skipped);
+  EXPECT_THROW(CGAL::detect_and_fair_highlight_line_irregularities(
+                   all, HL::default_light_setup(all), HLP::minimum_confidence(1.5)),
+               HL::Invalid_input);
 }
 
 TEST(DetectAndFair, RecordsRegionsThatCannotBeFairedAndGoesOn)
