@@ -37,6 +37,7 @@ struct Detection_options
   int margin = 2;
   double maximum_incidence_angle = 60; // degrees
   double sharp_edge_angle = 60;        // degrees
+  bool all_sides = true;
 
   template <typename NamedParameters>
   explicit Detection_options(const NamedParameters& np)
@@ -56,6 +57,7 @@ struct Detection_options
         choose_parameter(get_parameter(np, internal_np::minimum_evidence), minimum_evidence));
     const double m =
         double(choose_parameter(get_parameter(np, internal_np::region_margin), margin));
+    all_sides = bool(choose_parameter(get_parameter(np, internal_np::all_sides), all_sides));
     maximum_incidence_angle = double(choose_parameter(
         get_parameter(np, internal_np::maximum_incidence_angle), maximum_incidence_angle));
     auto require = [](bool ok, const char* what) {
@@ -149,10 +151,15 @@ Finds the places where the highlight lines of a triangle mesh bend abnormally (d
 wiggles, kinks) and returns face regions enclosing them, ready for
 `fair_with_highlight_lines()`.
 
-<b>The sweep.</b> The light setup `lights` is rotated within its plane (`number_of_orientations`
-directions, `180°/n` apart, about the plane normal through the base point) and, for each
-direction, shifted across the lights (`number_of_offsets` positions, `s/k` apart), so that
-every part of the surface is crossed by highlight lines of several directions. One highlight
+<b>The sweep.</b> The light planes are the plane of `lights` and, with `all_sides` (the
+default), the five other sides of a cube around the mesh in the frame of `lights` (normals
+`±Z`, `±H`, `±H×Z`, each plane as far from the centroid of the vertices as `lights`, with its
+spacing `s`): every normal lies within 54.7° of one of their normals, so every face faces some
+plane within the default incidence limit and is scored. Each plane's lights are rotated within
+the plane (`number_of_orientations` directions, `180°/n` apart, about the plane normal through
+the base point) and, for each direction, shifted across the lights (`number_of_offsets`
+positions, `s/k` apart), so that every part of the surface is crossed by highlight lines of
+several directions. One highlight
 line model is computed per setup, with the vertex normals computed once.
 
 <b>The measure.</b> Each highlight line is resampled at a uniform arc-length step
@@ -179,7 +186,8 @@ across them (a region reaches a sharp edge's vertices, never the other side).
 
 <b>The regions.</b> Each anomaly is attached to the mesh vertex nearest to it. Anomalies less
 than `detection_scale` edges apart form a cluster; clusters seen in fewer than a fraction
-`minimum_evidence` of the light setups are discarded as noise (a defect bends the lines of
+`minimum_evidence` of the light setups that score their vertices (those of the planes they
+face within the incidence limit) are discarded as noise (a defect bends the lines of
 every direction; triangulation noise rarely lines up across setups). Each remaining cluster
 grows by `region_margin` rings of edges, clusters that meet merge, and the region is the set
 of faces with a vertex in the grown cluster. Regions are disjoint.
@@ -238,8 +246,8 @@ and the lights together, and independent of the mesh's face order.
       \cgalParamDefault{0.01}
     \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::minimum_evidence}
-      \cgalParamDescription{the fraction of the light setups of the sweep in which a region
-        must show anomalies, in (0, 1]}
+      \cgalParamDescription{the fraction of the light setups of the sweep that can see a region
+        (that face it) in which it must show anomalies, in (0, 1]}
       \cgalParamDefault{0.5}
     \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::region_margin}
@@ -255,6 +263,12 @@ and the lights together, and independent of the mesh's face order.
       \cgalParamDescription{the largest angle (degrees, in (0, 90]) between a vertex normal and
         the light plane's normal at which the lines are scored}
       \cgalParamDefault{60}
+    \cgalParamNEnd
+    \cgalParamNBegin{Highlight_lines::parameters::all_sides}
+      \cgalParamDescription{whether the sweep also uses the five other sides of a cube around
+        the mesh in the frame of `lights` (so that every face is scored); `false`: the plane of
+        `lights` only, about six times cheaper}
+      \cgalParamDefault{`true`}
     \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::max_levels_per_edge,
                      Highlight_lines::parameters::facing_side_only}
@@ -394,85 +408,136 @@ OutputIterator detect_highlight_line_irregularities(
   std::vector<Vec3> polyline;
   std::vector<std::vector<int>> sample_vertices;
   std::vector<HL::internal::Line_bending> bendings;
-  for (int o = 0; o < options.orientations; ++o) {
-    const HL::Light_setup<GeomTraits> turned =
-        o == 0 ? lights : lights.rotated(lights.plane_normal(), pi * o / options.orientations);
-    const auto across = turned.index_direction();
-    for (int k = 0; k < options.offsets; ++k, ++setup_id) {
-      const HL::Light_setup<GeomTraits> shifted =
-          k == 0 ? turned : turned.translated(across * (turned.spacing() * k / options.offsets));
-      const auto model = sweeper.compute(shifted, model_options);
-      const auto& nodes = model.nodes();
-      const auto& lines = model.lines();
-
-      bendings.resize(lines.size());
-      sample_vertices.resize(lines.size());
-      const auto z = shifted.plane_normal_array();
-      std::vector<double> pooled;
-      for (std::size_t l = 0; l < lines.size(); ++l) {
-        polyline.clear();
-        for (std::size_t n : lines[l].nodes) {
-          const auto& p = nodes[n].point;
-          polyline.push_back(
-              {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
-        }
-        HL::internal::compute_line_bending(polyline, lines[l].is_closed, scales, bendings[l]);
-        // Each sample's mesh vertex; samples where the surface turns too far away from the
-        // lights are not scored.
-        std::vector<double>& bending = bendings[l].bending;
-        sample_vertices[l].assign(bending.size(), -1);
-        for (std::size_t i = 0; i < bending.size(); ++i) {
-          if (bending[i] < 0)
-            continue;
-          const auto& node = nodes[lines[l].nodes[bendings[l].nearest_vertex[i]]];
-          vertex_descriptor v = node.vertex;
-          if (!node.is_on_vertex())
-            v = node.parameter < 0.5 ? source(node.halfedge, tm) : target(node.halfedge, tm);
-          const std::size_t index = get(vim, v);
-          const int compact = index < compact_of_index.size() ? compact_of_index[index] : -1;
-          if (compact < 0 ||
-              dot(normals[std::size_t(compact)], Vec3{z[0], z[1], z[2]}) < minimum_facing) {
-            bending[i] = -1;
-            continue;
-          }
-          sample_vertices[l][i] = compact;
-          pooled.push_back(bending[i]);
-        }
+  // The light planes: `lights`, then (if all sides are looked at) the five other faces of a
+  // cube around the mesh in the lights' frame (Z, H, H x Z), as far from the mesh's centroid as
+  // `lights`: every unit normal lies within 54.7 degrees of one of their normals, so every face
+  // is scored by the setups of at least one plane. All have the spacing of `lights`.
+  const auto z0 = lights.plane_normal_array(), h0 = lights.light_direction_array();
+  const auto x0 = HL::Light_setup<GeomTraits>::cross(h0, z0);
+  Vec3 centre{0, 0, 0};
+  double reach = 0;
+  for (int v = 0; v < nv; ++v) {
+    const double* p = local.point(v);
+    centre = centre + (1.0 / double(nv)) * Vec3{p[0], p[1], p[2]};
+  }
+  for (int v = 0; v < nv; ++v) {
+    const double* p = local.point(v);
+    reach = (std::max)(reach, norm(Vec3{p[0], p[1], p[2]} - centre));
+  }
+  const auto a0 = lights.base_point_array();
+  double distance =
+      dot(Vec3{a0[0] - centre[0], a0[1] - centre[1], a0[2] - centre[2]}, Vec3{z0[0], z0[1], z0[2]});
+  if (!(distance > reach))
+    distance = 2 * reach;
+  std::vector<HL::Light_setup<GeomTraits>> planes(1, lights);
+  if (options.all_sides)
+    for (int axis = 0; axis < 3; ++axis)
+      for (double sign : {1.0, -1.0}) {
+        if (axis == 0 && sign > 0)
+          continue; // `lights` itself
+        const auto& n = axis == 0 ? z0 : axis == 1 ? h0 : x0;
+        const auto& h = axis == 0 ? h0 : z0;
+        typedef typename GeomTraits::Point_3 Point_3;
+        typedef typename GeomTraits::Vector_3 Vector_3;
+        planes.emplace_back(Point_3(centre[0] + distance * sign * n[0],
+                                    centre[1] + distance * sign * n[1],
+                                    centre[2] + distance * sign * n[2]),
+                            Vector_3(h[0], h[1], h[2]),
+                            Vector_3(sign * n[0], sign * n[1], sign * n[2]), lights.spacing());
       }
-      const HL::internal::Robust_statistics setup_stats = HL::internal::robust_statistics(pooled);
+  // How many setups score each vertex: those of the planes it faces within the incidence limit.
+  std::vector<std::size_t> scoring_setups(static_cast<std::size_t>(nv), 0);
+  for (const auto& plane : planes) {
+    const auto z = plane.plane_normal_array();
+    for (int v = 0; v < nv; ++v)
+      if (dot(normals[std::size_t(v)], Vec3{z[0], z[1], z[2]}) >= minimum_facing)
+        scoring_setups[std::size_t(v)] += std::size_t(options.orientations * options.offsets);
+  }
 
-      for (std::size_t l = 0; l < lines.size(); ++l, ++line_id) {
-        HL::internal::Robust_statistics stats =
-            HL::internal::robust_statistics(bendings[l].bending);
-        if (stats.count < 32)
-          stats = setup_stats;
-        const double deviation = (std::max)({stats.deviation, 0.25 * setup_stats.deviation,
-                                             1e-3 * options.minimum_bending, 1e-300});
-        const auto& bending = bendings[l].bending;
-        for (std::size_t i = 0; i < bending.size(); ++i) {
-          if (bending[i] < 0 || !(bending[i] > options.minimum_bending))
-            continue;
-          const double score = (bending[i] - stats.median) / deviation;
-          if (!(score > options.threshold) || !is_local_maximum(bending, i, lines[l].is_closed))
-            continue;
-          if (near_sharp[std::size_t(sample_vertices[l][i])])
-            continue;
-          HL::internal::Anomaly a;
-          a.vertex = sample_vertices[l][i];
-          a.line = line_id;
-          a.setup = setup_id;
-          a.score = score;
-          a.bending = bending[i];
-          anomalies.push_back(a);
+  for (const auto& plane : planes)
+    for (int o = 0; o < options.orientations; ++o) {
+      const HL::Light_setup<GeomTraits> turned =
+          o == 0 ? plane : plane.rotated(plane.plane_normal(), pi * o / options.orientations);
+      const auto across = turned.index_direction();
+      for (int k = 0; k < options.offsets; ++k, ++setup_id) {
+        const HL::Light_setup<GeomTraits> shifted =
+            k == 0 ? turned : turned.translated(across * (turned.spacing() * k / options.offsets));
+        const auto model = sweeper.compute(shifted, model_options);
+        const auto& nodes = model.nodes();
+        const auto& lines = model.lines();
+
+        bendings.resize(lines.size());
+        sample_vertices.resize(lines.size());
+        const auto z = shifted.plane_normal_array();
+        std::vector<double> pooled;
+        for (std::size_t l = 0; l < lines.size(); ++l) {
+          polyline.clear();
+          for (std::size_t n : lines[l].nodes) {
+            const auto& p = nodes[n].point;
+            polyline.push_back(
+                {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
+          }
+          HL::internal::compute_line_bending(polyline, lines[l].is_closed, scales, bendings[l]);
+          // Each sample's mesh vertex; samples where the surface turns too far away from the
+          // lights are not scored.
+          std::vector<double>& bending = bendings[l].bending;
+          sample_vertices[l].assign(bending.size(), -1);
+          for (std::size_t i = 0; i < bending.size(); ++i) {
+            if (bending[i] < 0)
+              continue;
+            const auto& node = nodes[lines[l].nodes[bendings[l].nearest_vertex[i]]];
+            vertex_descriptor v = node.vertex;
+            if (!node.is_on_vertex())
+              v = node.parameter < 0.5 ? source(node.halfedge, tm) : target(node.halfedge, tm);
+            const std::size_t index = get(vim, v);
+            const int compact = index < compact_of_index.size() ? compact_of_index[index] : -1;
+            if (compact < 0 ||
+                dot(normals[std::size_t(compact)], Vec3{z[0], z[1], z[2]}) < minimum_facing) {
+              bending[i] = -1;
+              continue;
+            }
+            sample_vertices[l][i] = compact;
+            pooled.push_back(bending[i]);
+          }
+        }
+        const HL::internal::Robust_statistics setup_stats = HL::internal::robust_statistics(pooled);
+
+        for (std::size_t l = 0; l < lines.size(); ++l, ++line_id) {
+          HL::internal::Robust_statistics stats =
+              HL::internal::robust_statistics(bendings[l].bending);
+          if (stats.count < 32)
+            stats = setup_stats;
+          const double deviation = (std::max)({stats.deviation, 0.25 * setup_stats.deviation,
+                                               1e-3 * options.minimum_bending, 1e-300});
+          const auto& bending = bendings[l].bending;
+          for (std::size_t i = 0; i < bending.size(); ++i) {
+            if (bending[i] < 0 || !(bending[i] > options.minimum_bending))
+              continue;
+            const double score = (bending[i] - stats.median) / deviation;
+            if (!(score > options.threshold) || !is_local_maximum(bending, i, lines[l].is_closed))
+              continue;
+            if (near_sharp[std::size_t(sample_vertices[l][i])])
+              continue;
+            HL::internal::Anomaly a;
+            a.vertex = sample_vertices[l][i];
+            a.line = line_id;
+            a.setup = setup_id;
+            a.score = score;
+            a.bending = bending[i];
+            anomalies.push_back(a);
+          }
         }
       }
     }
-  }
 
   const int join_rings = (std::max)(1, int(std::ceil(options.scale)));
-  const std::size_t setups = std::size_t(options.orientations * options.offsets);
-  const std::size_t minimum_setups = (std::max)(
-      std::size_t(1), std::size_t(std::ceil(options.minimum_evidence * double(setups) - 1e-9)));
+  // A region must show in a share `minimum_evidence` of the setups that can see it.
+  std::vector<std::size_t> minimum_setups(static_cast<std::size_t>(nv));
+  for (int v = 0; v < nv; ++v)
+    minimum_setups[std::size_t(v)] =
+        (std::max)(std::size_t(1),
+                   std::size_t(std::ceil(
+                       options.minimum_evidence * double(scoring_setups[std::size_t(v)]) - 1e-9)));
   const auto regions = HL::internal::group_anomalies(corners, nv, anomalies, join_rings,
                                                      options.margin, minimum_setups, sharp);
   std::vector<HL::Highlight_line_irregularity<TriangleMesh>> found;
@@ -524,7 +589,11 @@ OutputIterator detect_highlight_line_irregularities(
     // a length of at most 6w. Larger or longer regions are shape at another scale: design.
     const double slenderness = (std::min)(1.0, std::pow(2 * width / (std::max)(length, 1e-300), 2));
     const double locality = (std::min)(1.0, std::pow(6 * w / (std::max)(length, 1e-300), 2));
-    irregularity.confidence = double(setups_seen.size()) / double(setups) * slenderness * locality;
+    std::size_t seeing = 1;
+    for (std::size_t i : region.anomalies)
+      seeing = (std::max)(seeing, scoring_setups[std::size_t(anomalies[i].vertex)]);
+    irregularity.confidence =
+        (std::min)(1.0, double(setups_seen.size()) / double(seeing)) * slenderness * locality;
     if (slenderness < 1) {
       irregularity.kind = HL::Irregularity_kind::ELONGATED;
     } else if (locality < 1) {

@@ -124,17 +124,20 @@ inline int label_components(const Vertex_adjacency& adjacency, const std::vector
 
 // Groups anomalies into disjoint face regions:
 // 1. anomalies closer than `join_rings` edges belong to one cluster;
-// 2. a cluster seen in fewer than `minimum_setups` light setups is dropped: a defect bends
-//    the lines of every direction, while triangulation noise rarely lines up across setups;
+// 2. a cluster seen in fewer light setups than the largest `minimum_setups[v]` of its
+//    anomalies' vertices is dropped: a defect bends the lines of every direction, while
+//    triangulation noise rarely lines up across setups;
 // 3. the remaining clusters grow by `margin_rings` edges, clusters that meet merge, and each
 //    region is the set of faces with a vertex in the grown cluster.
 // `barrier` (optional, one flag per vertex: the vertices of sharp edges): clusters and margins
 // reach these vertices but never grow through them, so no region crosses a feature line; a
 // face goes to the region of one of its vertices off the barrier if it has one.
-inline std::vector<Anomaly_region>
-group_anomalies(const std::vector<std::array<int, 3>>& faces, int number_of_vertices,
-                const std::vector<Anomaly>& anomalies, int join_rings, int margin_rings,
-                std::size_t minimum_setups, const std::vector<char>& barrier = {})
+inline std::vector<Anomaly_region> group_anomalies(const std::vector<std::array<int, 3>>& faces,
+                                                   int number_of_vertices,
+                                                   const std::vector<Anomaly>& anomalies,
+                                                   int join_rings, int margin_rings,
+                                                   const std::vector<std::size_t>& minimum_setups,
+                                                   const std::vector<char>& barrier = {})
 {
   const Vertex_adjacency adjacency(faces, number_of_vertices);
   std::vector<char> inside(std::size_t(number_of_vertices), 0);
@@ -145,10 +148,14 @@ group_anomalies(const std::vector<std::array<int, 3>>& faces, int number_of_vert
   const int clusters = label_components(adjacency, inside, label, barrier);
 
   std::vector<std::set<std::size_t>> setups(static_cast<std::size_t>(clusters));
-  for (const Anomaly& a : anomalies)
-    setups[std::size_t(label[std::size_t(a.vertex)])].insert(a.setup);
+  std::vector<std::size_t> required(static_cast<std::size_t>(clusters), 1);
+  for (const Anomaly& a : anomalies) {
+    const std::size_t c = std::size_t(label[std::size_t(a.vertex)]);
+    setups[c].insert(a.setup);
+    required[c] = (std::max)(required[c], minimum_setups[std::size_t(a.vertex)]);
+  }
   for (std::size_t v = 0; v < inside.size(); ++v)
-    if (inside[v] && setups[std::size_t(label[v])].size() < minimum_setups)
+    if (inside[v] && setups[std::size_t(label[v])].size() < required[std::size_t(label[v])])
       inside[v] = 0;
   grow_by_rings(adjacency, margin_rings, inside, barrier);
   const int components = label_components(adjacency, inside, label, barrier);
@@ -168,6 +175,16 @@ group_anomalies(const std::vector<std::array<int, 3>>& faces, int number_of_vert
     if (label[std::size_t(anomalies[i].vertex)] >= 0)
       regions[std::size_t(label[std::size_t(anomalies[i].vertex)])].anomalies.push_back(i);
   return regions;
+}
+
+inline std::vector<Anomaly_region> group_anomalies(const std::vector<std::array<int, 3>>& faces,
+                                                   int number_of_vertices,
+                                                   const std::vector<Anomaly>& anomalies,
+                                                   int join_rings, int margin_rings,
+                                                   std::size_t minimum_setups)
+{
+  return group_anomalies(faces, number_of_vertices, anomalies, join_rings, margin_rings,
+                         std::vector<std::size_t>(std::size_t(number_of_vertices), minimum_setups));
 }
 
 // The square roots of the two largest eigenvalues of the symmetric 3 x 3 matrix `c` (a
