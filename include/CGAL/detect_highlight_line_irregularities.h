@@ -210,6 +210,9 @@ confidence after the local defects; restrict the search with `face_range`.
 The measure and the regions are invariant under rigid motions and uniform scalings of the mesh
 and the lights together, and independent of the mesh's face order.
 
+\tparam ConcurrencyTag `CGAL::Sequential_tag` (the default), or `CGAL::Parallel_tag` (needs TBB)
+        or `CGAL::Parallel_if_available_tag` to compute each light setup's model in parallel
+        (the regions are the same)
 \tparam TriangleMesh a model of `FaceGraph` whose faces are triangles
 \tparam GeomTraits a model of `Kernel`
 \tparam OutputIterator an output iterator accepting
@@ -276,6 +279,12 @@ and the lights together, and independent of the mesh's face order.
         sweep (`level_range` is ignored: the setups are rotated)}
       \cgalParamDefault{256 and `true`}
     \cgalParamNEnd
+    \cgalParamNBegin{callback}
+      \cgalParamDescription{a callable `bool f(double)` called after each light setup of the
+        sweep with the fraction of the setups done (in (0, 1]); if it returns `false`, the
+        detection stops and writes no region}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
     \cgalParamNBegin{vertex_point_map, vertex_index_map, face_index_map, halfedge_index_map}
       \cgalParamDescription{as for `compute_highlight_lines()`}
     \cgalParamNEnd
@@ -288,7 +297,8 @@ a named parameter out of its domain. The mesh is only read.
 
 \sa `detect_and_fair_highlight_line_irregularities()` to repair every region found.
 */
-template <typename TriangleMesh, typename GeomTraits, typename OutputIterator,
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
+          typename GeomTraits, typename OutputIterator,
           typename NamedParameters = parameters::Default_named_parameters>
 OutputIterator detect_highlight_line_irregularities(
     const TriangleMesh& tm, const Highlight_lines::Light_setup<GeomTraits>& lights,
@@ -301,7 +311,8 @@ OutputIterator detect_highlight_line_irregularities(
   typedef boost::graph_traits<TriangleMesh> Graph_traits;
   typedef typename Graph_traits::vertex_descriptor vertex_descriptor;
   typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type Vertex_point_map;
-  typedef HL::Highlight_line_sweeper<TriangleMesh, Vertex_point_map, GeomTraits> Sweeper;
+  typedef HL::Highlight_line_sweeper<TriangleMesh, Vertex_point_map, GeomTraits, ConcurrencyTag>
+      Sweeper;
 
   const HL::internal::Detection_options options(np);
   const Sweeper sweeper(tm, np); // checks the mesh
@@ -454,6 +465,15 @@ OutputIterator detect_highlight_line_irregularities(
         scoring_setups[std::size_t(v)] += std::size_t(options.orientations * options.offsets);
   }
 
+  // Progress and cancellation (the `callback` named parameter).
+  constexpr bool has_callback =
+      !parameters::is_default_parameter<NamedParameters, internal_np::callback_t>::value;
+  const auto callback =
+      choose_parameter(get_parameter(np, internal_np::callback), [](double) { return true; });
+  const std::size_t total_setups =
+      planes.size() * std::size_t(options.orientations * options.offsets);
+  (void)total_setups;
+
   for (const auto& plane : planes)
     for (int o = 0; o < options.orientations; ++o) {
       const HL::Light_setup<GeomTraits> turned =
@@ -527,6 +547,9 @@ OutputIterator detect_highlight_line_irregularities(
             anomalies.push_back(a);
           }
         }
+        if constexpr (has_callback)
+          if (!callback(double(setup_id + 1) / double(total_setups)))
+            return out; // cancelled: no region
       }
     }
 

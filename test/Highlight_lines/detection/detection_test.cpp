@@ -484,6 +484,37 @@ TEST(Detection, IndependentOfFaceOrderAndMeshType)
   }
 }
 
+TEST(Detection, ReportsProgressCanBeCancelledAndRunsInParallel)
+{
+  HB::Mesh mesh = smooth_hood(7, 40);
+  ASSERT_EQ(HB::inject_defects(mesh, 1, 4.0, 0.5, 7, [](auto) { return true; }).size(), 1u);
+  const auto lights = HL::default_light_setup(mesh, HLP::number_of_lines(30));
+  std::vector<double> progress;
+  std::vector<HB::Irregularity> found, cancelled, parallel;
+  CGAL::detect_highlight_line_irregularities(mesh, lights, std::back_inserter(found),
+                                             CGAL::parameters::callback([&](double f) {
+                                               progress.push_back(f);
+                                               return true;
+                                             }));
+  ASSERT_EQ(progress.size(), 6u * 3u * 2u); // 6 planes x 3 orientations x 2 offsets
+  EXPECT_TRUE(std::is_sorted(progress.begin(), progress.end()));
+  EXPECT_DOUBLE_EQ(progress.back(), 1.0);
+  ASSERT_EQ(found.size(), 1u);
+  std::size_t calls = 0;
+  CGAL::detect_highlight_line_irregularities(
+      mesh, lights, std::back_inserter(cancelled),
+      CGAL::parameters::callback([&](double) { return ++calls < 3; }));
+  EXPECT_EQ(calls, 3u);
+  EXPECT_TRUE(cancelled.empty());
+#ifdef CGAL_LINKED_WITH_TBB
+  CGAL::detect_highlight_line_irregularities<CGAL::Parallel_tag>(mesh, lights,
+                                                                 std::back_inserter(parallel));
+  ASSERT_EQ(parallel.size(), found.size());
+  EXPECT_EQ(face_keys(mesh, parallel[0]), face_keys(mesh, found[0]));
+  EXPECT_DOUBLE_EQ(parallel[0].score, found[0].score);
+#endif
+}
+
 // --- Bad input ----------------------------------------------------------------------------
 
 TEST(Detection, RejectsParametersOutOfTheirDomain)
