@@ -4,16 +4,15 @@
 //   benchmark_detection --curves   the curves only
 //
 // Curves: dents and bumps of radius 5 mean edge lengths (ē) and height h·ē, four per mesh,
-// injected at random (seeded) into
-//   - a smooth car hood, irregularly triangulated (jittered 80 x 80 grid, 12,800 triangles),
-//     8 seeds: every region found is either a defect or a false alarm;
-//   - the shared real meshes: these have irregularities of their own (creases, panel joints,
-//     measurement noise). Regions found on the mesh before injection are its own; defects are
-//     injected away from them, and a region overlapping them without holding a defect counts
-//     as "own", not as a false alarm.
-// Defects are placed where the lights show them (vertex normal within 45° of the light plane's
-// normal). Recall: defects whose centre vertex lies in a region. Precision: regions holding a
-// defect, over regions not counted as "own".
+// injected at random (seeded):
+//   - into a smooth car hood, irregularly triangulated (jittered 80 x 80 grid, 12,800
+//     triangles), 8 seeds: every region found is either a defect or a false alarm;
+//   - anywhere into every shared real mesh (see shared_table()): recall, precision counting
+//     every region without a defect as false, the rank of the defects, the regions found on
+//     the mesh as it is, and time and memory against one compute_highlight_lines().
+//
+//   benchmark_detection --shared [--seeds N]   the shared meshes only (N x 4 defects/height)
+//   benchmark_detection --mesh NAME            one shared mesh
 //
 // Speed: the detection (3 x 2 light setups) on the bundled beetle Loop-subdivided twice
 // (618,496 triangles), as a ratio to one compute_highlight_lines() on the same mesh measured
@@ -29,6 +28,11 @@
 
 #include <benchmark/benchmark.h>
 
+#include <atomic>
+#include <chrono>
+#include <cstdlib>
+#include <malloc.h>
+#include <new>
 #include <cstring>
 #include <fstream>
 #include <iomanip>
@@ -40,6 +44,78 @@ namespace {
 namespace HB = Highlight_lines_benchmark;
 namespace HL = CGAL::Highlight_lines;
 namespace HLP = CGAL::Highlight_lines::parameters;
+
+// --- Memory: every allocation of the program counted, the peak since the last reset --------
+
+std::atomic<std::size_t> allocated_bytes{0}, peak_bytes{0};
+
+void* counted_allocation(std::size_t size)
+{
+  void* p = std::malloc(size == 0 ? 1 : size);
+  if (!p)
+    throw std::bad_alloc();
+  const std::size_t now = allocated_bytes += malloc_usable_size(p);
+  std::size_t peak = peak_bytes.load();
+  while (now > peak && !peak_bytes.compare_exchange_weak(peak, now)) {
+  }
+  return p;
+}
+
+void counted_free(void* p) noexcept
+{
+  if (p) {
+    allocated_bytes -= malloc_usable_size(p);
+    std::free(p);
+  }
+}
+
+} // namespace
+
+void* operator new(std::size_t size)
+{
+  return counted_allocation(size);
+}
+void* operator new[](std::size_t size)
+{
+  return counted_allocation(size);
+}
+void operator delete(void* p) noexcept
+{
+  counted_free(p);
+}
+void operator delete[](void* p) noexcept
+{
+  counted_free(p);
+}
+void operator delete(void* p, std::size_t) noexcept
+{
+  counted_free(p);
+}
+void operator delete[](void* p, std::size_t) noexcept
+{
+  counted_free(p);
+}
+
+namespace Highlight_lines_benchmark {
+// The peak of the memory allocated with operator new since construction or reset(), above
+// what was allocated then.
+class Peak_memory
+{
+public:
+  Peak_memory() { reset(); }
+  void reset()
+  {
+    base_ = allocated_bytes.load();
+    peak_bytes = base_;
+  }
+  std::size_t peak() const { return peak_bytes.load() - base_; }
+
+private:
+  std::size_t base_ = 0;
+};
+} // namespace Highlight_lines_benchmark
+
+namespace {
 
 const std::vector<double> heights{1.0, 0.5, 0.2, 0.1, 0.05, 0.02, 0.01};
 
@@ -97,7 +173,25 @@ void hood_curve()
   print_curve("smooth hood; last row: no defect (false alarms)", curve, 8, 0);
 }
 
-void shared_curve(const std::string& name)
+// The table on the shared real meshes. Per mesh: the regions found on the mesh as it is (none
+// is an injected defect: design, or the mesh's own irregularities), then per height
+// h in {1, 0.5, 0.2, 0.1} ē, `seeds` meshes with four defects each (radius 5 ē, dent or bump
+// at random, centred on any vertex at least 2R from the border and 3R from each other).
+//   recall     defects whose centre vertex lies in a region;
+//   precision  regions holding a defect over all regions (every region without one is false);
+//   first      found defects ranked above every region of the same mesh that holds none;
+//   >undented  defects whose region ranks above every region found on the undented mesh
+//              (missed defects count as failures);
+//   rank       mean rank (1 = strongest) of the regions of the found defects.
+// Time and memory: the detection on the undented mesh, as ratios to one
+// compute_highlight_lines() with the default lights (30 lines) on the same mesh.
+struct Table_row
+{
+  std::size_t defects = 0, found = 0, regions = 0, true_regions = 0, first = 0, above_undented = 0,
+              rank_sum = 0;
+};
+
+void shared_table(const std::string& name, unsigned seeds)
 {
   HB::Mesh original;
   std::ifstream in(test::shared_data(name));
@@ -105,60 +199,87 @@ void shared_curve(const std::string& name)
     std::cout << "\n" << name << ": not found, skipped\n";
     return;
   }
-  // The mesh's own regions, and the vertices near them (no defect goes there).
-  const auto own = detect(original);
-  std::set<HB::vertex_descriptor> own_vertices;
-  for (const auto& r : own)
-    for (auto f : r.faces)
-      for (auto v : CGAL::vertices_around_face(halfedge(f, original), original))
-        own_vertices.insert(v);
-  // Defects go where the lights can show them: on vertices facing the light plane.
   const auto lights = HL::default_light_setup(original, HLP::number_of_lines(30));
-  auto normals = original.add_property_map<HB::vertex_descriptor, HB::Vector>("v:n").first;
-  CGAL::Polygon_mesh_processing::compute_vertex_normals(original, normals);
-  std::vector<Curve_point> curve(heights.size());
-  for (unsigned seed = 1; seed <= 4; ++seed)
-    for (std::size_t i = 0; i < heights.size(); ++i) {
+  HB::Peak_memory memory;
+  auto start = std::chrono::steady_clock::now();
+  {
+    auto model = CGAL::compute_highlight_lines(original, lights, CGAL::Emptyset_iterator(),
+                                               HLP::facing_side_only(true));
+    benchmark::DoNotOptimize(model.nodes().data());
+  }
+  const double model_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const std::size_t model_bytes = memory.peak();
+  memory.reset();
+  start = std::chrono::steady_clock::now();
+  const auto own = detect(original);
+  const double detect_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const std::size_t detect_bytes = memory.peak();
+
+  std::cout << "\n"
+            << name << " (" << num_faces(original) << " faces): detection " << std::fixed
+            << std::setprecision(2) << detect_seconds << " s = " << std::setprecision(1)
+            << detect_seconds / model_seconds << " x compute_highlight_lines(), peak memory "
+            << double(detect_bytes) / double((std::max)(model_bytes, std::size_t(1))) << " x ("
+            << double(detect_bytes) / 1e6 << " MB)\n"
+            << std::defaultfloat << "  undented mesh: " << own.size() << " region(s)";
+  for (const auto& r : own)
+    std::cout << " [" << HB::describe(r) << "]";
+  std::cout << "\n  h/ē   defects  recall  precision  first  >undented  mean rank  regions\n";
+  for (double h : {1.0, 0.5, 0.2, 0.1}) {
+    Table_row row;
+    for (unsigned seed = 1; seed <= seeds; ++seed) {
       HB::Mesh mesh = original;
-      const double radius = 5.0 * HB::mean_edge_length(mesh);
-      const auto defects =
-          HB::inject_defects(mesh, 4, 5.0, heights[i], seed, [&](HB::vertex_descriptor v) {
-            if (normals[v] * lights.plane_normal() < 0.7)
-              return false;
-            for (auto w : own_vertices)
-              if (CGAL::squared_distance(original.point(w), original.point(v)) <
-                  4 * radius * radius)
-                return false;
-            return true;
-          });
+      const auto defects = HB::inject_defects(mesh, 4, 5.0, h, seed, [](auto) { return true; });
       const auto found = detect(mesh);
       const HB::Detection_score s = HB::match(mesh, defects, found);
-      curve[i].defects += s.defects;
-      curve[i].found += s.found_defects;
-      curve[i].regions += s.regions;
-      curve[i].true_regions += s.true_regions;
-      // Regions without a defect that overlap the mesh's own ones are its own.
-      for (const auto& r : found) {
-        bool has_defect = false, overlaps_own = false;
-        for (auto f : r.faces)
-          for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh)) {
-            overlaps_own = overlaps_own || own_vertices.count(v) > 0;
-            for (const auto& d : defects)
-              has_defect = has_defect ||
-                           CGAL::squared_distance(mesh.point(v), d.centre) < d.radius * d.radius;
-          }
-        curve[i].own += !has_defect && overlaps_own;
+      row.defects += s.defects;
+      row.found += s.found_defects;
+      row.regions += s.regions;
+      row.true_regions += s.true_regions;
+      const auto holds = HB::regions_of_defects(mesh, defects, found);
+      const auto genuine = HB::genuine_regions(mesh, defects, found);
+      for (std::size_t d = 0; d < defects.size(); ++d) {
+        const std::size_t r = holds[d];
+        if (r == std::size_t(-1))
+          continue;
+        row.rank_sum += r + 1;
+        bool first = true;
+        for (std::size_t j = 0; j < found.size(); ++j)
+          first = first && (genuine[j] || HB::stronger(found[r], found[j]));
+        row.first += first;
+        bool above = true;
+        for (const auto& o : own)
+          above = above && HB::stronger(found[r], o);
+        row.above_undented += above;
       }
     }
-  print_curve(name, curve, 4, own.size());
+    std::cout << "  " << std::setw(4) << h << "  " << std::setw(7) << row.defects << "  "
+              << std::fixed << std::setprecision(3) << std::setw(6)
+              << (row.defects ? double(row.found) / double(row.defects) : 1.0) << "  "
+              << std::setw(9)
+              << (row.regions ? double(row.true_regions) / double(row.regions) : 1.0) << "  "
+              << std::setw(5) << (row.found ? double(row.first) / double(row.found) : 1.0) << "  "
+              << std::setw(9)
+              << (row.defects ? double(row.above_undented) / double(row.defects) : 1.0) << "  "
+              << std::setprecision(1) << std::setw(9)
+              << (row.found ? double(row.rank_sum) / double(row.found) : 0.0) << "  "
+              << std::setw(7) << row.regions << std::defaultfloat << "\n"
+              << std::flush;
+  }
 }
 
-void curves()
+void curves(const std::vector<std::string>& meshes, unsigned seeds, bool hood)
 {
-  std::cout << "Detection recall and precision vs defect height h (radius 5 ē)\n";
-  hood_curve();
-  for (const char* name : {"beetle.off", "spot.off", "rocker-arm.off", "camelhead.off"})
-    shared_curve(name);
+  if (hood) {
+    std::cout << "Detection recall and precision vs defect height h (radius 5 ē)\n";
+    hood_curve();
+  }
+  std::cout << "\nShared meshes: dents and bumps of radius 5 ē anywhere on the surface, " << seeds
+            << " x 4 per height\n";
+  for (const auto& name : meshes)
+    shared_table(name, seeds);
 }
 
 // --- Speed --------------------------------------------------------------------------------
@@ -209,10 +330,19 @@ BENCHMARK(BM_detect)->Unit(benchmark::kMillisecond)->UseRealTime();
 int main(int argc, char** argv)
 {
   std::vector<char*> args;
-  bool curves_only = false;
+  bool curves_only = false, hood = true;
+  unsigned seeds = 2;
+  std::vector<std::string> meshes{"beetle.off",  "bunny.off",      "camelhead.off",
+                                  "fandisk.off", "rocker-arm.off", "spot.off"};
   for (int i = 0; i < argc; ++i) {
     if (std::strcmp(argv[i], "--curves") == 0)
       curves_only = true;
+    else if (std::strcmp(argv[i], "--shared") == 0) // the shared meshes only
+      curves_only = true, hood = false;
+    else if (std::strcmp(argv[i], "--mesh") == 0 && i + 1 < argc)
+      meshes.assign(1, argv[++i]), curves_only = true, hood = false;
+    else if (std::strcmp(argv[i], "--seeds") == 0 && i + 1 < argc)
+      seeds = unsigned(std::stoul(argv[++i]));
     else
       args.push_back(argv[i]);
   }
@@ -225,7 +355,7 @@ int main(int argc, char** argv)
       benchmark::RunSpecifiedBenchmarks();
       benchmark::Shutdown();
     }
-    curves();
+    curves(meshes, seeds, hood);
   } catch (const std::exception& e) {
     std::cerr << "benchmark_detection: " << e.what() << "\n";
     return 1;

@@ -14,6 +14,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <string>
 #include <random>
 #include <set>
 #include <vector>
@@ -143,6 +146,61 @@ inline Detection_score match(const Mesh& mesh, const std::vector<Injected_defect
     score.true_regions += genuine;
   }
   return score;
+}
+
+/// Whether region `a` is reported before region `b` (the order of the detection's output).
+inline bool stronger(const Irregularity& a, const Irregularity& b)
+{
+  return a.confidence * a.score > b.confidence * b.score;
+}
+
+/// One line about a region: its size and strength.
+inline std::string describe(const Irregularity& r)
+{
+  std::ostringstream s;
+  s << CGAL::Highlight_lines::to_string(r.kind) << ", " << r.faces.size() << " faces, score "
+    << std::setprecision(3) << r.score << ", confidence " << std::setprecision(2) << r.confidence;
+  return s.str();
+}
+
+inline std::vector<std::set<vertex_descriptor>>
+vertices_of_regions(const Mesh& mesh, const std::vector<Irregularity>& found)
+{
+  std::vector<std::set<vertex_descriptor>> region_vertices(found.size());
+  for (std::size_t i = 0; i < found.size(); ++i)
+    for (face_descriptor f : found[i].faces)
+      for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+        region_vertices[i].insert(v);
+  return region_vertices;
+}
+
+/// Per defect, the index of the region holding its centre vertex, or -1.
+inline std::vector<std::size_t> regions_of_defects(const Mesh& mesh,
+                                                   const std::vector<Injected_defect>& defects,
+                                                   const std::vector<Irregularity>& found)
+{
+  const auto region_vertices = vertices_of_regions(mesh, found);
+  std::vector<std::size_t> holds(defects.size(), std::size_t(-1));
+  for (std::size_t d = 0; d < defects.size(); ++d)
+    for (std::size_t i = 0; i < found.size() && holds[d] == std::size_t(-1); ++i)
+      if (region_vertices[i].count(defects[d].centre_vertex) > 0)
+        holds[d] = i;
+  return holds;
+}
+
+/// Per region, whether it has a vertex within the radius of some defect.
+inline std::vector<bool> genuine_regions(const Mesh& mesh,
+                                         const std::vector<Injected_defect>& defects,
+                                         const std::vector<Irregularity>& found)
+{
+  const auto region_vertices = vertices_of_regions(mesh, found);
+  std::vector<bool> genuine(found.size(), false);
+  for (std::size_t i = 0; i < found.size(); ++i)
+    for (vertex_descriptor v : region_vertices[i])
+      for (const auto& d : defects)
+        if (CGAL::squared_distance(mesh.point(v), d.centre) < d.radius * d.radius)
+          genuine[i] = true;
+  return genuine;
 }
 
 } // namespace Highlight_lines_benchmark

@@ -118,11 +118,14 @@ int main(int argc, char** argv)
         HLP::combine(HLP::number_of_orientations(o.orientations), HLP::number_of_offsets(o.offsets),
                      HLP::detection_scale(o.scale), HLP::detection_threshold(o.threshold)));
 
-    std::cout << found.size() << " irregular region(s), strongest first:\n";
+    std::cout << found.size()
+              << " irregular region(s), the likeliest defects first (confidence below 0.5: "
+                 "likely design):\n";
     std::ofstream regions_file(o.out + ".regions.txt");
     for (std::size_t i = 0; i < found.size(); ++i) {
       const auto& r = found[i];
-      std::cout << "  #" << i + 1 << ": score " << r.score << ", bending up to " << r.max_bending
+      std::cout << "  #" << i + 1 << ": " << HL::to_string(r.kind) << ", confidence "
+                << r.confidence << ", score " << r.score << ", bending up to " << r.max_bending
                 << " rad, seen on " << r.number_of_lines << " lines in " << r.number_of_light_setups
                 << " light setups, " << r.faces.size() << " faces around "
                 << mesh.point(r.peak_vertex) << "\n";

@@ -75,6 +75,9 @@ const char* usage =
     "                        the strongest) instead of the close-up; --center, --radius and\n"
     "                        --region then only place the dent\n"
     "  --max-regions N       with --detect: fair at most the N strongest regions (default: all)\n"
+    "  --min-confidence C    with --detect: fair only the regions of confidence >= C (default\n"
+    "                        0.5; the others, elongated along a feature or wider than a defect,\n"
+    "                        are likely design and are listed as skipped); 0 fairs every one\n"
     "  --show-irregularities also sweep the lights over the whole mesh and write\n"
     "                        PREFIX_irregularities.png, the irregular regions tinted (done by\n"
     "                        default only for the bundled beetle without --center/--region)\n"
@@ -97,6 +100,7 @@ struct Options
   bool detect = false, show_irregularities = false;
   HL::Fairness_energy energy = HL::Fairness_energy::WILLMORE;
   std::size_t max_regions = std::size_t(-1);
+  double min_confidence = 0.5;
 };
 
 Options parse(int argc, char** argv)
@@ -133,7 +137,11 @@ Options parse(int argc, char** argv)
       o.energy = HL::Fairness_energy::MEAN_CURVATURE;
     else if (a == "--curvature-variation")
       o.energy = HL::Fairness_energy::CURVATURE_VARIATION;
-    else if (a == "--max-regions") {
+    else if (a == "--min-confidence") {
+      o.min_confidence = number(i, argc, argv);
+      if (!(o.min_confidence >= 0 && o.min_confidence <= 1))
+        fail("--min-confidence must be in [0, 1]");
+    } else if (a == "--max-regions") {
       const double n = number(i, argc, argv);
       if (!(n >= 1))
         fail("--max-regions must be at least 1");
@@ -216,11 +224,11 @@ find_irregularities(const Mesh& mesh, const HL::Light_setup<K>& lights)
   std::vector<HL::Highlight_line_irregularity<Mesh>> found;
   CGAL::detect_highlight_line_irregularities(mesh, lights, std::back_inserter(found),
                                              HLP::number_of_offsets(4));
-  std::cout << found.size() << " irregular region(s), strongest first:\n";
+  std::cout << found.size() << " irregular region(s), the likeliest defects first:\n";
   for (const auto& r : found)
-    std::cout << "  score " << r.score << ", " << r.faces.size() << " faces around "
-              << mesh.point(r.peak_vertex) << ", seen in " << r.number_of_light_setups
-              << " light setups\n";
+    std::cout << "  " << HL::to_string(r.kind) << ", confidence " << r.confidence << ", score "
+              << r.score << ", " << r.faces.size() << " faces around " << mesh.point(r.peak_vertex)
+              << ", seen in " << r.number_of_light_setups << " light setups\n";
   return found;
 }
 
@@ -263,6 +271,19 @@ int detect_and_fair(Mesh& mesh, const Options& o)
 {
   const HL::Light_setup<K> lights = sweep_lights(mesh, o);
   std::vector<HL::Highlight_line_irregularity<Mesh>> found = find_irregularities(mesh, lights);
+  // Only the likely defects are faired (as detect_and_fair_highlight_line_irregularities()
+  // does with its minimum_confidence); no region crosses a sharp edge.
+  std::vector<HL::Highlight_line_irregularity<Mesh>> skipped;
+  {
+    std::vector<HL::Highlight_line_irregularity<Mesh>> kept;
+    for (auto& r : found)
+      (r.confidence >= o.min_confidence ? kept : skipped).push_back(std::move(r));
+    found.swap(kept);
+  }
+  for (const auto& r : skipped)
+    std::cout << "skipped (confidence " << r.confidence << " below " << o.min_confidence << ", "
+              << HL::to_string(r.kind) << ": likely design): " << r.faces.size() << " faces around "
+              << mesh.point(r.peak_vertex) << "\n";
   if (found.size() > o.max_regions) {
     found.resize(o.max_regions);
     std::cout << "the " << o.max_regions << " strongest are faired\n";
@@ -293,7 +314,8 @@ int detect_and_fair(Mesh& mesh, const Options& o)
   layout.title = "Irregular regions found and faired";
   const pic::Image both =
       pic::side_by_side({before, after},
-                        {"before: " + std::to_string(found.size()) + " region(s) found",
+                        {"before: " + std::to_string(found.size()) + " region(s) to fair, " +
+                             std::to_string(skipped.size()) + " skipped as design",
                          "after: " + std::to_string(repaired) + " faired"},
                         layout);
   if (!pic::write_png(o.out + "_regions.png", both) ||

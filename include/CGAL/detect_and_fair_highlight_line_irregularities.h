@@ -9,6 +9,7 @@
 #include <CGAL/fair_with_highlight_lines.h>
 
 #include <iterator>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -21,6 +22,13 @@ each of them with `fair_with_highlight_lines()`, one at a time, the strongest fi
 paper prescribes for several regions (the model is recomputed for each, so a region is faired
 against the highlight lines left by the previous ones).
 
+Only the regions that are most likely defects are faired: those whose `confidence` reaches
+`minimum_confidence` (default 0.5: a compact region seen in at least half of the light setups;
+regions elongated along a feature or spread wider than a defect, `ELONGATED` and `EXTENDED`,
+fall below it). The others are reported as skipped (`Irregularity_repair::skipped`) and left
+untouched. No region found crosses a sharp edge (see `detect_highlight_line_irregularities()`),
+so no fairing reshapes a feature line.
+
 A region whose fairing is refused (e.g. it has no movable vertex because it is too thin) or
 fails is left exactly as it was, recorded with the reason, and the next region is tried.
 
@@ -32,9 +40,16 @@ fails is left exactly as it was, recorded with the reason, and the next region i
 fairing makes run smoothly
 \param np an optional sequence of named parameters: those of
 `detect_highlight_line_irregularities()` and those of `fair_with_highlight_lines()`, passed to
-both (a `fairing_visitor` is called for every iteration of every region).
+both (a `fairing_visitor` is called for every iteration of every region), and:
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{Highlight_lines::parameters::minimum_confidence}
+      \cgalParamDescription{the `confidence` (in [0, 1]) below which a region found is skipped}
+      \cgalParamDefault{0.5}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
 
-\returns one entry per region found, in the order they were faired.
+\returns one entry per region found, in the order they were found (and faired), skipped ones
+included.
 
 \throws Highlight_lines::Invalid_input for what the detection rejects (the mesh is untouched).
 Exceptions other than `Highlight_lines::Invalid_input` and `Highlight_lines::Fairing_failure`
@@ -49,6 +64,11 @@ detect_and_fair_highlight_line_irregularities(
     const NamedParameters& np = parameters::default_values())
 {
   namespace HL = Highlight_lines;
+  const double minimum_confidence = double(parameters::choose_parameter(
+      parameters::get_parameter(np, HL::internal_np::minimum_confidence), 0.5));
+  if (!(minimum_confidence >= 0 && minimum_confidence <= 1))
+    throw HL::Invalid_input(HL::Invalid_input::Problem::INVALID_PARAMETER,
+                            "minimum_confidence must be in [0, 1]");
   std::vector<HL::Highlight_line_irregularity<TriangleMesh>> found;
   detect_highlight_line_irregularities(static_cast<const TriangleMesh&>(tm), lights,
                                        std::back_inserter(found), np);
@@ -57,6 +77,14 @@ detect_and_fair_highlight_line_irregularities(
   for (auto& irregularity : found) {
     HL::Irregularity_repair<TriangleMesh> repair;
     repair.irregularity = std::move(irregularity);
+    if (repair.irregularity.confidence < minimum_confidence) {
+      repair.skipped = true;
+      repair.failure = "skipped: confidence " + std::to_string(repair.irregularity.confidence) +
+                       " below minimum_confidence " + std::to_string(minimum_confidence) +
+                       " (likely design, not a defect)";
+      repairs.push_back(std::move(repair));
+      continue;
+    }
     try {
       repair.report = fair_with_highlight_lines(tm, repair.irregularity.faces, lights, np);
       repair.repaired = true;

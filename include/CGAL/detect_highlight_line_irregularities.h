@@ -36,6 +36,8 @@ struct Detection_options
   double minimum_evidence = 0.5; // fraction of the light setups
   int margin = 2;
   double maximum_incidence_angle = 60; // degrees
+  double sharp_edge_angle = 60;        // degrees
+  bool all_sides = true;
 
   template <typename NamedParameters>
   explicit Detection_options(const NamedParameters& np)
@@ -55,6 +57,7 @@ struct Detection_options
         choose_parameter(get_parameter(np, internal_np::minimum_evidence), minimum_evidence));
     const double m =
         double(choose_parameter(get_parameter(np, internal_np::region_margin), margin));
+    all_sides = bool(choose_parameter(get_parameter(np, internal_np::all_sides), all_sides));
     maximum_incidence_angle = double(choose_parameter(
         get_parameter(np, internal_np::maximum_incidence_angle), maximum_incidence_angle));
     auto require = [](bool ok, const char* what) {
@@ -77,6 +80,67 @@ struct Detection_options
   }
 };
 
+// Whether the vertex `peak` lies below (against `normal`) the quadric height field over its
+// tangent plane fitted to the vertices of `region` farther than 60 % of the region's radius
+// from it; the mean of those vertices if the fit is singular.
+template <typename Local_mesh>
+bool peak_lies_below_fit(const Local_mesh& local, int peak, const vector3::Vec3& normal,
+                         const std::set<int>& region)
+{
+  using namespace vector3;
+  const double* pp = local.point(peak);
+  const Vec3 p{pp[0], pp[1], pp[2]};
+  Vec3 t = std::abs(normal[0]) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+  t = t - dot(t, normal) * normal;
+  t = (1 / norm(t)) * t;
+  const Vec3 u = cross(normal, t);
+  double radius = 0;
+  for (int v : region) {
+    const double* q = local.point(v);
+    radius = (std::max)(radius, norm(Vec3{q[0], q[1], q[2]} - p));
+  }
+  if (!(radius > 0))
+    return false;
+  double m[6][7] = {};
+  double mean = 0;
+  std::size_t count = 0;
+  for (int v : region) {
+    const double* q = local.point(v);
+    const Vec3 d = Vec3{q[0], q[1], q[2]} - p;
+    if (norm(d) < 0.6 * radius)
+      continue;
+    const double x = dot(d, t) / radius, y = dot(d, u) / radius, h = dot(d, normal);
+    const double basis[6] = {1, x, y, x * x, x * y, y * y};
+    for (int i = 0; i < 6; ++i) {
+      for (int j = 0; j < 6; ++j)
+        m[i][j] += basis[i] * basis[j];
+      m[i][6] += basis[i] * h;
+    }
+    mean += h;
+    ++count;
+  }
+  if (count == 0)
+    return false;
+  // Gaussian elimination with partial pivoting; the constant term is the fit at the peak.
+  for (int c = 0; c < 6; ++c) {
+    int pivot = c;
+    for (int r = c + 1; r < 6; ++r)
+      if (std::abs(m[r][c]) > std::abs(m[pivot][c]))
+        pivot = r;
+    if (!(std::abs(m[pivot][c]) > 1e-12 * double(count)))
+      return mean / double(count) > 0;
+    for (int k = 0; k < 7; ++k)
+      std::swap(m[c][k], m[pivot][k]);
+    for (int r = 0; r < 6; ++r)
+      if (r != c) {
+        const double f = m[r][c] / m[c][c];
+        for (int k = 0; k < 7; ++k)
+          m[r][k] -= f * m[c][k];
+      }
+  }
+  return m[0][6] / m[0][0] > 0;
+}
+
 } // namespace internal
 } // namespace Highlight_lines
 
@@ -87,10 +151,15 @@ Finds the places where the highlight lines of a triangle mesh bend abnormally (d
 wiggles, kinks) and returns face regions enclosing them, ready for
 `fair_with_highlight_lines()`.
 
-<b>The sweep.</b> The light setup `lights` is rotated within its plane (`number_of_orientations`
-directions, `180°/n` apart, about the plane normal through the base point) and, for each
-direction, shifted across the lights (`number_of_offsets` positions, `s/k` apart), so that
-every part of the surface is crossed by highlight lines of several directions. One highlight
+<b>The sweep.</b> The light planes are the plane of `lights` and, with `all_sides` (the
+default), the five other sides of a cube around the mesh in the frame of `lights` (normals
+`±Z`, `±H`, `±H×Z`, each plane as far from the centroid of the vertices as `lights`, with its
+spacing `s`): every normal lies within 54.7° of one of their normals, so every face faces some
+plane within the default incidence limit and is scored. Each plane's lights are rotated within
+the plane (`number_of_orientations` directions, `180°/n` apart, about the plane normal through
+the base point) and, for each direction, shifted across the lights (`number_of_offsets`
+positions, `s/k` apart), so that every part of the surface is crossed by highlight lines of
+several directions. One highlight
 line model is computed per setup, with the vertex normals computed once.
 
 <b>The measure.</b> Each highlight line is resampled at a uniform arc-length step
@@ -110,21 +179,40 @@ than `3w/2` to the end of an open line, and samples where the surface normal mak
 `maximum_incidence_angle` with the light plane's normal (near the silhouette, `d` grows without
 bound and lines crowd beyond what the triangulation resolves), are not scored.
 
+<b>Sharp edges.</b> Edges whose two faces' normals make more than 60° (the criterion of
+`Polygon_mesh_processing::detect_sharp_edges()`) are feature lines where the lines kink by
+design: anomalies within one ring of their vertices are not counted, and no region grows
+across them (a region reaches a sharp edge's vertices, never the other side).
+
 <b>The regions.</b> Each anomaly is attached to the mesh vertex nearest to it. Anomalies less
 than `detection_scale` edges apart form a cluster; clusters seen in fewer than a fraction
-`minimum_evidence` of the light setups are discarded as noise (a defect bends the lines of
+`minimum_evidence` of the light setups that score their vertices (those of the planes they
+face within the incidence limit) are discarded as noise (a defect bends the lines of
 every direction; triangulation noise rarely lines up across setups). Each remaining cluster
 grows by `region_margin` rings of edges, clusters that meet merge, and the region is the set
-of faces with a vertex in the grown cluster. Regions are disjoint and written by decreasing
-score.
+of faces with a vertex in the grown cluster. Regions are disjoint.
+
+<b>Defect or design.</b> A dent or a bump is local and round: its anomalies spread over at
+most `2R + 3w` (`R` its radius, up to the scale `3w/2` the measure looks for) in every
+direction. A fillet, a panel joint or a soft crease bends the lines all along its length, and
+a change of shape at a larger scale bends them over a wide area. Each region gets a `kind`
+(`Highlight_lines::Irregularity_kind`: `DENT` or `BUMP` by the side of the smooth quadric its
+surroundings predict on which the strongest anomaly lies, `ELONGATED` or `EXTENDED`) and a
+`confidence` in [0, 1] (the share of the light setups that saw it, lowered for elongated and
+extended regions: see `Highlight_lines::Highlight_line_irregularity::confidence`). Regions are
+written by decreasing `confidence * score`: local defects first, design last.
 
 A defect is only seen where several lines cross it: the lights' spacing and
-`number_of_offsets` set how small a defect can be found. Design features where the lines kink
-on purpose (creases, panel joints) are reported too; restrict the search with `face_range`.
+`number_of_offsets` set how small a defect can be found. Design features that are not sharp
+edges (fillets, panel joints) are reported too, as `ELONGATED` or `EXTENDED` regions of low
+confidence after the local defects; restrict the search with `face_range`.
 
 The measure and the regions are invariant under rigid motions and uniform scalings of the mesh
 and the lights together, and independent of the mesh's face order.
 
+\tparam ConcurrencyTag `CGAL::Sequential_tag` (the default), or `CGAL::Parallel_tag` (needs TBB)
+        or `CGAL::Parallel_if_available_tag` to compute each light setup's model in parallel
+        (the regions are the same)
 \tparam TriangleMesh a model of `FaceGraph` whose faces are triangles
 \tparam GeomTraits a model of `Kernel`
 \tparam OutputIterator an output iterator accepting
@@ -161,8 +249,8 @@ and the lights together, and independent of the mesh's face order.
       \cgalParamDefault{0.01}
     \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::minimum_evidence}
-      \cgalParamDescription{the fraction of the light setups of the sweep in which a region
-        must show anomalies, in (0, 1]}
+      \cgalParamDescription{the fraction of the light setups of the sweep that can see a region
+        (that face it) in which it must show anomalies, in (0, 1]}
       \cgalParamDefault{0.5}
     \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::region_margin}
@@ -179,11 +267,23 @@ and the lights together, and independent of the mesh's face order.
         the light plane's normal at which the lines are scored}
       \cgalParamDefault{60}
     \cgalParamNEnd
+    \cgalParamNBegin{Highlight_lines::parameters::all_sides}
+      \cgalParamDescription{whether the sweep also uses the five other sides of a cube around
+        the mesh in the frame of `lights` (so that every face is scored); `false`: the plane of
+        `lights` only, about six times cheaper}
+      \cgalParamDefault{`true`}
+    \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::max_levels_per_edge,
                      Highlight_lines::parameters::facing_side_only}
       \cgalParamDescription{as for `compute_highlight_lines()`, for every light setup of the
         sweep (`level_range` is ignored: the setups are rotated)}
       \cgalParamDefault{256 and `true`}
+    \cgalParamNEnd
+    \cgalParamNBegin{callback}
+      \cgalParamDescription{a callable `bool f(double)` called after each light setup of the
+        sweep with the fraction of the setups done (in (0, 1]); if it returns `false`, the
+        detection stops and writes no region}
+      \cgalParamDefault{none}
     \cgalParamNEnd
     \cgalParamNBegin{vertex_point_map, vertex_index_map, face_index_map, halfedge_index_map}
       \cgalParamDescription{as for `compute_highlight_lines()`}
@@ -197,7 +297,8 @@ a named parameter out of its domain. The mesh is only read.
 
 \sa `detect_and_fair_highlight_line_irregularities()` to repair every region found.
 */
-template <typename TriangleMesh, typename GeomTraits, typename OutputIterator,
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
+          typename GeomTraits, typename OutputIterator,
           typename NamedParameters = parameters::Default_named_parameters>
 OutputIterator detect_highlight_line_irregularities(
     const TriangleMesh& tm, const Highlight_lines::Light_setup<GeomTraits>& lights,
@@ -210,7 +311,8 @@ OutputIterator detect_highlight_line_irregularities(
   typedef boost::graph_traits<TriangleMesh> Graph_traits;
   typedef typename Graph_traits::vertex_descriptor vertex_descriptor;
   typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type Vertex_point_map;
-  typedef HL::Highlight_line_sweeper<TriangleMesh, Vertex_point_map, GeomTraits> Sweeper;
+  typedef HL::Highlight_line_sweeper<TriangleMesh, Vertex_point_map, GeomTraits, ConcurrencyTag>
+      Sweeper;
 
   const HL::internal::Detection_options options(np);
   const Sweeper sweeper(tm, np); // checks the mesh
@@ -252,20 +354,42 @@ OutputIterator detect_highlight_line_irregularities(
       choose_parameter(get_parameter(np, HL::internal_np::facing_side_only), true));
 
   const double pi = 3.14159265358979323846;
-  // Unit vertex normals (area-weighted), for the incidence test of the samples.
-  std::vector<Vec3> normals(std::size_t(nv), Vec3{0, 0, 0});
-  for (const auto& f : local.face_vertices) {
-    const double *a = local.point(f[0]), *b = local.point(f[1]), *c = local.point(f[2]);
-    const Vec3 n = cross(Vec3{b[0] - a[0], b[1] - a[1], b[2] - a[2]},
-                         Vec3{c[0] - a[0], c[1] - a[1], c[2] - a[2]});
-    for (int v : f)
-      if (v < nv)
-        normals[std::size_t(v)] = normals[std::size_t(v)] + n;
+  // Unit vertex normals (eq. 3), for the incidence test of the samples.
+  std::vector<Vec3> normals(static_cast<std::size_t>(nv));
+  for (int v = 0; v < nv; ++v) {
+    const auto n = sweeper.vertex_normals().unit_normal(v);
+    normals[std::size_t(v)] = Vec3{n[0], n[1], n[2]};
   }
-  for (Vec3& n : normals) {
-    const double length = norm(n);
-    n = length > 0 ? (1 / length) * n : Vec3{0, 0, 0};
+  // Sharp edges: the angle between the normals of their two faces exceeds
+  // `sharp_edge_angle` (the criterion of PMP::detect_sharp_edges()). The lines kink there by
+  // design: anomalies within one ring of a sharp edge's vertex are not counted, and no region
+  // grows across one.
+  std::vector<char> sharp(static_cast<std::size_t>(nv), 0);
+  {
+    const double cos_sharp = std::cos(options.sharp_edge_angle * pi / 180);
+    std::vector<std::array<int, 2>> edge_faces(local.edge_vertices.size(), {-1, -1});
+    for (std::size_t f = 0; f < nf; ++f)
+      for (int e : local.face_edges[f]) {
+        auto& ef = edge_faces[std::size_t(e)];
+        (ef[0] < 0 ? ef[0] : ef[1]) = int(f);
+      }
+    auto face_normal = [&](int f) {
+      const auto& c = corners[std::size_t(f)];
+      const double *p = local.point(c[0]), *q = local.point(c[1]), *r = local.point(c[2]);
+      const Vec3 n = cross(Vec3{q[0] - p[0], q[1] - p[1], q[2] - p[2]},
+                           Vec3{r[0] - p[0], r[1] - p[1], r[2] - p[2]});
+      const double length = norm(n);
+      return length > 0 ? (1 / length) * n : n;
+    };
+    for (std::size_t e = 0; e < edge_faces.size(); ++e)
+      if (edge_faces[e][1] >= 0 &&
+          dot(face_normal(edge_faces[e][0]), face_normal(edge_faces[e][1])) < cos_sharp)
+        for (int v : local.edge_vertices[e])
+          if (v < nv)
+            sharp[std::size_t(v)] = 1;
   }
+  std::vector<char> near_sharp = sharp;
+  HL::internal::grow_by_rings(HL::internal::Vertex_adjacency(corners, nv), 1, near_sharp);
   const double minimum_facing = std::cos(options.maximum_incidence_angle * pi / 180);
 
   // Only the peaks of the bending along a line count (one per stencil width w): the stencil
@@ -295,85 +419,150 @@ OutputIterator detect_highlight_line_irregularities(
   std::vector<Vec3> polyline;
   std::vector<std::vector<int>> sample_vertices;
   std::vector<HL::internal::Line_bending> bendings;
-  for (int o = 0; o < options.orientations; ++o) {
-    const HL::Light_setup<GeomTraits> turned =
-        o == 0 ? lights : lights.rotated(lights.plane_normal(), pi * o / options.orientations);
-    const auto across = turned.index_direction();
-    for (int k = 0; k < options.offsets; ++k, ++setup_id) {
-      const HL::Light_setup<GeomTraits> shifted =
-          k == 0 ? turned : turned.translated(across * (turned.spacing() * k / options.offsets));
-      const auto model = sweeper.compute(shifted, model_options);
-      const auto& nodes = model.nodes();
-      const auto& lines = model.lines();
-
-      bendings.resize(lines.size());
-      sample_vertices.resize(lines.size());
-      const auto z = shifted.plane_normal_array();
-      std::vector<double> pooled;
-      for (std::size_t l = 0; l < lines.size(); ++l) {
-        polyline.clear();
-        for (std::size_t n : lines[l].nodes) {
-          const auto& p = nodes[n].point;
-          polyline.push_back(
-              {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
-        }
-        HL::internal::compute_line_bending(polyline, lines[l].is_closed, scales, bendings[l]);
-        // Each sample's mesh vertex; samples where the surface turns too far away from the
-        // lights are not scored.
-        std::vector<double>& bending = bendings[l].bending;
-        sample_vertices[l].assign(bending.size(), -1);
-        for (std::size_t i = 0; i < bending.size(); ++i) {
-          if (bending[i] < 0)
-            continue;
-          const auto& node = nodes[lines[l].nodes[bendings[l].nearest_vertex[i]]];
-          vertex_descriptor v = node.vertex;
-          if (!node.is_on_vertex())
-            v = node.parameter < 0.5 ? source(node.halfedge, tm) : target(node.halfedge, tm);
-          const std::size_t index = get(vim, v);
-          const int compact = index < compact_of_index.size() ? compact_of_index[index] : -1;
-          if (compact < 0 ||
-              dot(normals[std::size_t(compact)], Vec3{z[0], z[1], z[2]}) < minimum_facing) {
-            bending[i] = -1;
-            continue;
-          }
-          sample_vertices[l][i] = compact;
-          pooled.push_back(bending[i]);
-        }
+  // The light planes: `lights`, then (if all sides are looked at) the five other faces of a
+  // cube around the mesh in the lights' frame (Z, H, H x Z), as far from the mesh's centroid as
+  // `lights`: every unit normal lies within 54.7 degrees of one of their normals, so every face
+  // is scored by the setups of at least one plane. All have the spacing of `lights`.
+  const auto z0 = lights.plane_normal_array(), h0 = lights.light_direction_array();
+  const auto x0 = HL::Light_setup<GeomTraits>::cross(h0, z0);
+  Vec3 centre{0, 0, 0};
+  double reach = 0;
+  for (int v = 0; v < nv; ++v) {
+    const double* p = local.point(v);
+    centre = centre + (1.0 / double(nv)) * Vec3{p[0], p[1], p[2]};
+  }
+  for (int v = 0; v < nv; ++v) {
+    const double* p = local.point(v);
+    reach = (std::max)(reach, norm(Vec3{p[0], p[1], p[2]} - centre));
+  }
+  const auto a0 = lights.base_point_array();
+  double distance =
+      dot(Vec3{a0[0] - centre[0], a0[1] - centre[1], a0[2] - centre[2]}, Vec3{z0[0], z0[1], z0[2]});
+  if (!(distance > reach))
+    distance = 2 * reach;
+  std::vector<HL::Light_setup<GeomTraits>> planes(1, lights);
+  if (options.all_sides)
+    for (int axis = 0; axis < 3; ++axis)
+      for (double sign : {1.0, -1.0}) {
+        if (axis == 0 && sign > 0)
+          continue; // `lights` itself
+        const auto& n = axis == 0 ? z0 : axis == 1 ? h0 : x0;
+        const auto& h = axis == 0 ? h0 : z0;
+        typedef typename GeomTraits::Point_3 Point_3;
+        typedef typename GeomTraits::Vector_3 Vector_3;
+        planes.emplace_back(Point_3(centre[0] + distance * sign * n[0],
+                                    centre[1] + distance * sign * n[1],
+                                    centre[2] + distance * sign * n[2]),
+                            Vector_3(h[0], h[1], h[2]),
+                            Vector_3(sign * n[0], sign * n[1], sign * n[2]), lights.spacing());
       }
-      const HL::internal::Robust_statistics setup_stats = HL::internal::robust_statistics(pooled);
-
-      for (std::size_t l = 0; l < lines.size(); ++l, ++line_id) {
-        HL::internal::Robust_statistics stats =
-            HL::internal::robust_statistics(bendings[l].bending);
-        if (stats.count < 32)
-          stats = setup_stats;
-        const double deviation = (std::max)({stats.deviation, 0.25 * setup_stats.deviation,
-                                             1e-3 * options.minimum_bending, 1e-300});
-        const auto& bending = bendings[l].bending;
-        for (std::size_t i = 0; i < bending.size(); ++i) {
-          if (bending[i] < 0 || !(bending[i] > options.minimum_bending))
-            continue;
-          const double score = (bending[i] - stats.median) / deviation;
-          if (!(score > options.threshold) || !is_local_maximum(bending, i, lines[l].is_closed))
-            continue;
-          HL::internal::Anomaly a;
-          a.vertex = sample_vertices[l][i];
-          a.line = line_id;
-          a.setup = setup_id;
-          a.score = score;
-          a.bending = bending[i];
-          anomalies.push_back(a);
-        }
-      }
-    }
+  // How many setups score each vertex: those of the planes it faces within the incidence limit.
+  std::vector<std::size_t> scoring_setups(static_cast<std::size_t>(nv), 0);
+  for (const auto& plane : planes) {
+    const auto z = plane.plane_normal_array();
+    for (int v = 0; v < nv; ++v)
+      if (dot(normals[std::size_t(v)], Vec3{z[0], z[1], z[2]}) >= minimum_facing)
+        scoring_setups[std::size_t(v)] += std::size_t(options.orientations * options.offsets);
   }
 
+  // Progress and cancellation (the `callback` named parameter).
+  constexpr bool has_callback =
+      !parameters::is_default_parameter<NamedParameters, internal_np::callback_t>::value;
+  const auto callback =
+      choose_parameter(get_parameter(np, internal_np::callback), [](double) { return true; });
+  const std::size_t total_setups =
+      planes.size() * std::size_t(options.orientations * options.offsets);
+  (void)total_setups;
+
+  for (const auto& plane : planes)
+    for (int o = 0; o < options.orientations; ++o) {
+      const HL::Light_setup<GeomTraits> turned =
+          o == 0 ? plane : plane.rotated(plane.plane_normal(), pi * o / options.orientations);
+      const auto across = turned.index_direction();
+      for (int k = 0; k < options.offsets; ++k, ++setup_id) {
+        const HL::Light_setup<GeomTraits> shifted =
+            k == 0 ? turned : turned.translated(across * (turned.spacing() * k / options.offsets));
+        const auto model = sweeper.compute(shifted, model_options);
+        const auto& nodes = model.nodes();
+        const auto& lines = model.lines();
+
+        bendings.resize(lines.size());
+        sample_vertices.resize(lines.size());
+        const auto z = shifted.plane_normal_array();
+        std::vector<double> pooled;
+        for (std::size_t l = 0; l < lines.size(); ++l) {
+          polyline.clear();
+          for (std::size_t n : lines[l].nodes) {
+            const auto& p = nodes[n].point;
+            polyline.push_back(
+                {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
+          }
+          HL::internal::compute_line_bending(polyline, lines[l].is_closed, scales, bendings[l]);
+          // Each sample's mesh vertex; samples where the surface turns too far away from the
+          // lights are not scored.
+          std::vector<double>& bending = bendings[l].bending;
+          sample_vertices[l].assign(bending.size(), -1);
+          for (std::size_t i = 0; i < bending.size(); ++i) {
+            if (bending[i] < 0)
+              continue;
+            const auto& node = nodes[lines[l].nodes[bendings[l].nearest_vertex[i]]];
+            vertex_descriptor v = node.vertex;
+            if (!node.is_on_vertex())
+              v = node.parameter < 0.5 ? source(node.halfedge, tm) : target(node.halfedge, tm);
+            const std::size_t index = get(vim, v);
+            const int compact = index < compact_of_index.size() ? compact_of_index[index] : -1;
+            if (compact < 0 ||
+                dot(normals[std::size_t(compact)], Vec3{z[0], z[1], z[2]}) < minimum_facing) {
+              bending[i] = -1;
+              continue;
+            }
+            sample_vertices[l][i] = compact;
+            pooled.push_back(bending[i]);
+          }
+        }
+        const HL::internal::Robust_statistics setup_stats = HL::internal::robust_statistics(pooled);
+
+        for (std::size_t l = 0; l < lines.size(); ++l, ++line_id) {
+          HL::internal::Robust_statistics stats =
+              HL::internal::robust_statistics(bendings[l].bending);
+          if (stats.count < 32)
+            stats = setup_stats;
+          const double deviation = (std::max)({stats.deviation, 0.25 * setup_stats.deviation,
+                                               1e-3 * options.minimum_bending, 1e-300});
+          const auto& bending = bendings[l].bending;
+          for (std::size_t i = 0; i < bending.size(); ++i) {
+            if (bending[i] < 0 || !(bending[i] > options.minimum_bending))
+              continue;
+            const double score = (bending[i] - stats.median) / deviation;
+            if (!(score > options.threshold) || !is_local_maximum(bending, i, lines[l].is_closed))
+              continue;
+            if (near_sharp[std::size_t(sample_vertices[l][i])])
+              continue;
+            HL::internal::Anomaly a;
+            a.vertex = sample_vertices[l][i];
+            a.line = line_id;
+            a.setup = setup_id;
+            a.score = score;
+            a.bending = bending[i];
+            anomalies.push_back(a);
+          }
+        }
+        if constexpr (has_callback)
+          if (!callback(double(setup_id + 1) / double(total_setups)))
+            return out; // cancelled: no region
+      }
+    }
+
   const int join_rings = (std::max)(1, int(std::ceil(options.scale)));
-  const std::size_t setups = std::size_t(options.orientations * options.offsets);
-  const std::size_t minimum_setups = (std::max)(
-      std::size_t(1), std::size_t(std::ceil(options.minimum_evidence * double(setups) - 1e-9)));
+  // A region must show in a share `minimum_evidence` of the setups that can see it.
+  std::vector<std::size_t> minimum_setups(static_cast<std::size_t>(nv));
+  for (int v = 0; v < nv; ++v)
+    minimum_setups[std::size_t(v)] =
+        (std::max)(std::size_t(1),
+                   std::size_t(std::ceil(
+                       options.minimum_evidence * double(scoring_setups[std::size_t(v)]) - 1e-9)));
   const auto regions = HL::internal::group_anomalies(corners, nv, anomalies, join_rings,
-                                                     options.margin, minimum_setups);
+                                                     options.margin, minimum_setups, sharp);
   std::vector<HL::Highlight_line_irregularity<TriangleMesh>> found;
   for (const auto& region : regions) {
     if (region.anomalies.empty())
@@ -396,10 +585,67 @@ OutputIterator detect_highlight_line_irregularities(
     irregularity.number_of_anomalies = region.anomalies.size();
     irregularity.number_of_lines = lines_seen.size();
     irregularity.number_of_light_setups = setups_seen.size();
+
+    // The shape of the anomalies: their spread along the two main axes (standard deviations
+    // of the positions of their vertices, principal axes of the covariance).
+    std::set<int> anomaly_vertices;
+    for (std::size_t i : region.anomalies)
+      anomaly_vertices.insert(anomalies[i].vertex);
+    Vec3 mean{0, 0, 0};
+    for (int v : anomaly_vertices) {
+      const double* p = local.point(v);
+      mean = mean + (1.0 / double(anomaly_vertices.size())) * Vec3{p[0], p[1], p[2]};
+    }
+    double c[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+    for (int v : anomaly_vertices) {
+      const double* p = local.point(v);
+      const Vec3 d{p[0] - mean[0], p[1] - mean[1], p[2] - mean[2]};
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          c[i][j] += d[std::size_t(i)] * d[std::size_t(j)] / double(anomaly_vertices.size());
+    }
+    const auto axes = HL::internal::largest_spreads(c);
+    const double w = options.scale * mean_edge;
+    const double length = 4 * axes[0], width = (std::max)(4 * axes[1], w);
+    // A defect is local: the response to one of radius R spreads over R + 3w/2 from its
+    // centre, so a defect up to the detection's scale (R <= 3w/2) spreads its anomalies over
+    // a length of at most 6w. Larger or longer regions are shape at another scale: design.
+    const double slenderness = (std::min)(1.0, std::pow(2 * width / (std::max)(length, 1e-300), 2));
+    const double locality = (std::min)(1.0, std::pow(6 * w / (std::max)(length, 1e-300), 2));
+    std::size_t seeing = 1;
+    for (std::size_t i : region.anomalies)
+      seeing = (std::max)(seeing, scoring_setups[std::size_t(anomalies[i].vertex)]);
+    irregularity.confidence =
+        (std::min)(1.0, double(setups_seen.size()) / double(seeing)) * slenderness * locality;
+    if (slenderness < 1) {
+      irregularity.kind = HL::Irregularity_kind::ELONGATED;
+    } else if (locality < 1) {
+      irregularity.kind = HL::Irregularity_kind::EXTENDED;
+    } else {
+      // The peak against the smooth surface its surroundings predict: a quadric height
+      // field over the peak's tangent plane, fitted (least squares) to the region's outer
+      // vertices (beyond 60 % of the region's radius from the peak).
+      int peak = 0;
+      double best = -1;
+      for (std::size_t i : region.anomalies)
+        if (anomalies[i].score > best) {
+          best = anomalies[i].score;
+          peak = anomalies[i].vertex;
+        }
+      std::set<int> region_vertices;
+      for (int f : region.faces)
+        for (int v : corners[std::size_t(f)])
+          region_vertices.insert(v);
+      irregularity.kind = HL::internal::peak_lies_below_fit(local, peak, normals[std::size_t(peak)],
+                                                            region_vertices)
+                              ? HL::Irregularity_kind::DENT
+                              : HL::Irregularity_kind::BUMP;
+    }
     found.push_back(std::move(irregularity));
   }
-  std::stable_sort(found.begin(), found.end(),
-                   [](const auto& a, const auto& b) { return a.score > b.score; });
+  std::stable_sort(found.begin(), found.end(), [](const auto& a, const auto& b) {
+    return a.confidence * a.score > b.confidence * b.score;
+  });
   for (auto& irregularity : found)
     *out++ = std::move(irregularity);
   return out;

@@ -15,6 +15,47 @@ namespace Highlight_lines {
 /*!
 \ingroup PkgHighlightLinesRef
 
+What an irregular region found by `detect_highlight_line_irregularities()` looks like.
+*/
+enum class Irregularity_kind {
+  /// A compact region whose strongest anomaly lies below the mean of the region, along the
+  /// normal: a dent.
+  DENT,
+  /// A compact region whose strongest anomaly lies above the mean of the region: a bump.
+  BUMP,
+  /// Anomalies spread along a line, more than twice as long as wide (and as the detection
+  /// scale): the lines kink along a feature (a fillet, a panel joint, a crease
+  /// softer than the sharp-edge angle) rather than at one place. Usually design.
+  ELONGATED,
+  /// Anomalies spread over more than six times the detection scale `w` in every direction: a
+  /// change of shape at a larger scale than a defect the detection looks for (a defect of
+  /// radius `R <= 3w/2` spreads its anomalies over at most `2R + 3w`). Usually design.
+  EXTENDED
+};
+
+/*!
+\ingroup PkgHighlightLinesRef
+
+The name of `kind`, in lower case: "dent", "bump", "elongated" or "extended".
+*/
+inline const char* to_string(Irregularity_kind kind)
+{
+  switch (kind) {
+  case Irregularity_kind::DENT:
+    return "dent";
+  case Irregularity_kind::BUMP:
+    return "bump";
+  case Irregularity_kind::ELONGATED:
+    return "elongated";
+  case Irregularity_kind::EXTENDED:
+    return "extended";
+  }
+  return "unknown";
+}
+
+/*!
+\ingroup PkgHighlightLinesRef
+
 A place where highlight lines bend abnormally, as found by
 `detect_highlight_line_irregularities()`: a face region that encloses the anomalies with a
 margin, ready to be passed to `fair_with_highlight_lines()`.
@@ -45,6 +86,15 @@ struct Highlight_line_irregularity
   std::size_t number_of_lines = 0;
   /// Number of light setups of the sweep in which the region showed an anomaly.
   std::size_t number_of_light_setups = 0;
+  /// What the region looks like.
+  Irregularity_kind kind = Irregularity_kind::DENT;
+  /// How sure the detection is that the region is a local defect rather than design, in
+  /// [0, 1]: the fraction of the sweep's light setups that showed an anomaly in it, times
+  /// `min(1, (2 max(b, w) / l)^2)` (small for a region elongated along a feature) and
+  /// `min(1, (6w / l)^2)` (small for a region much larger than a defect), where `l` and `b`
+  /// are four standard deviations of the positions of the anomalies along their two main axes
+  /// and `w` the detection scale. Regions are reported by decreasing `confidence * score`.
+  double confidence = 0;
 };
 
 } // namespace Highlight_lines

@@ -27,6 +27,10 @@ struct Irregularity_repair
   /// Whether the region was faired; if not, the mesh is exactly as it was before this region
   /// was tried, and `failure` says why.
   bool repaired = false;
+  /// Whether the region was not tried at all: its `confidence` is below
+  /// `Highlight_lines::parameters::minimum_confidence` (most likely design, not a defect);
+  /// `failure` then says so.
+  bool skipped = false;
   /// The fairing's report: its iterations, or those carried out before a failure.
   Fairing_report report;
   /// The message of the exception that stopped the fairing of this region, or empty.

@@ -34,6 +34,8 @@ enum minimum_bending_t { minimum_bending };
 enum minimum_evidence_t { minimum_evidence };
 enum region_margin_t { region_margin };
 enum maximum_incidence_angle_t { maximum_incidence_angle };
+enum minimum_confidence_t { minimum_confidence };
+enum all_sides_t { all_sides };
 } // namespace internal_np
 /// \endcond
 
@@ -100,6 +102,8 @@ CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(minimum_bending_t, minimum_bending)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(minimum_evidence_t, minimum_evidence)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(region_margin_t, region_margin)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(maximum_incidence_angle_t, maximum_incidence_angle)
+CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(minimum_confidence_t, minimum_confidence)
+CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(all_sides_t, all_sides)
 
 #undef CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER
 

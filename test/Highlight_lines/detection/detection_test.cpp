@@ -6,6 +6,7 @@
 #include "../../../benchmark/Highlight_lines/detection_evaluation.h"
 
 #include <CGAL/Aff_transformation_3.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Highlight_lines/default_light_setup.h>
 #include <CGAL/Highlight_lines/fairing_building_blocks.h>
 #include <CGAL/detect_and_fair_highlight_line_irregularities.h>
@@ -14,6 +15,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <fstream>
+#include <iostream>
 #include <cmath>
 #include <map>
 #include <random>
@@ -45,6 +48,18 @@ std::vector<HB::Irregularity> detect(const HB::Mesh& mesh)
   return found;
 }
 
+// The hoods are height fields under the default lights: the planes on the other sides see
+// nothing the top plane does not (their lines crowd where the hood turns away from them and
+// are not scored), so the statistical tests on hoods sweep the top plane only, six times faster.
+std::vector<HB::Irregularity> detect_from_above(const HB::Mesh& mesh)
+{
+  std::vector<HB::Irregularity> found;
+  CGAL::detect_highlight_line_irregularities(
+      mesh, HL::default_light_setup(mesh, HLP::number_of_lines(30)), std::back_inserter(found),
+      HLP::all_sides(false));
+  return found;
+}
+
 // Recall and precision over seeds 1..8, four defects of radius 5 ē per hood.
 HB::Detection_score score_on_hoods(double height_in_edges)
 {
@@ -54,7 +69,7 @@ HB::Detection_score score_on_hoods(double height_in_edges)
     std::vector<HB::Injected_defect> defects;
     if (height_in_edges > 0)
       defects = HB::inject_defects(mesh, 4, 5.0, height_in_edges, seed, [](auto) { return true; });
-    const HB::Detection_score s = HB::match(mesh, defects, detect(mesh));
+    const HB::Detection_score s = HB::match(mesh, defects, detect_from_above(mesh));
     total.defects += s.defects;
     total.found_defects += s.found_defects;
     total.regions += s.regions;
@@ -236,6 +251,150 @@ TEST(Detection, RegionsEncloseTheirDefectWithAMargin)
   }
 }
 
+// --- Defect versus design ------------------------------------------------------------------
+
+// A hood folded along x = 0.1 (a crease of about 80 degrees between the normals, sharp
+// enough that the defects do not blunt it below 60 degrees anywhere), on a
+// regular grid whose column x = 0.1 runs along the crease.
+double folded(double x, double y)
+{
+  return hood(x, y) + (x > 0.1 ? 6 * (x - 0.1) : 0.0);
+}
+
+TEST(Detection, RegionsNeverCrossASharpEdge)
+{
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    HB::Mesh mesh = test::to_mesh<HB::Mesh>(test::grid(80, 2.0 / 80, -1, -1, folded, 0.0, seed));
+    const double e = HB::mean_edge_length(mesh);
+    // Defects centred 1 to 3 edges from the crease: their support lies on both sides.
+    const auto defects = HB::inject_defects(
+        mesh, 2, 5.0, 0.3, seed,
+        [&](HB::vertex_descriptor v) {
+          const double d = std::abs(mesh.point(v).x() - 0.1);
+          return d > e && d < 3 * e;
+        },
+        3);
+    ASSERT_FALSE(defects.empty());
+    // The vertices of the crease: a region may reach them, never the other side.
+    for (const auto& r : detect(mesh)) {
+      bool left = false, right = false;
+      for (auto f : r.faces)
+        for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh)) {
+          left = left || mesh.point(v).x() < 0.1 - 0.5 * e;
+          right = right || mesh.point(v).x() > 0.1 + 0.5 * e;
+        }
+      EXPECT_FALSE(left && right) << "seed " << seed << ": " << HB::describe(r);
+    }
+  }
+}
+
+TEST(Detection, ReportsDentsAndBumpsWithFullConfidenceOnSmoothHoods)
+{
+  std::size_t dents = 0, bumps = 0;
+  for (unsigned seed = 1; seed <= 4; ++seed) {
+    HB::Mesh mesh = smooth_hood(seed);
+    const auto defects = HB::inject_defects(
+        mesh, 3, 5.0, 0.3, seed, [](auto) { return true; }, 6);
+    const auto found = detect_from_above(mesh);
+    const auto holds = HB::regions_of_defects(mesh, defects, found);
+    for (std::size_t d = 0; d < defects.size(); ++d) {
+      ASSERT_NE(holds[d], std::size_t(-1));
+      const HB::Irregularity& r = found[holds[d]];
+      EXPECT_EQ(r.kind,
+                defects[d].height < 0 ? HL::Irregularity_kind::DENT : HL::Irregularity_kind::BUMP)
+          << HB::describe(r);
+      EXPECT_GE(r.confidence, 0.8) << HB::describe(r);
+      (defects[d].height < 0 ? dents : bumps) += 1;
+    }
+  }
+  EXPECT_GT(dents, 0u);
+  EXPECT_GT(bumps, 0u);
+}
+
+// The bundled demo (scripts/demo, part 3): the Beetle with the dent fair_with_highlight_lines
+// presses into its roof; `centre` is the dent's centre vertex.
+HB::Mesh demo_beetle(HB::vertex_descriptor& centre)
+{
+  HB::Mesh mesh;
+  std::ifstream in(std::string(HIGHLIGHT_LINES_DATA_DIR) + "/beetle.off");
+  if (!in || !CGAL::IO::read_OFF(in, mesh))
+    throw std::runtime_error("cannot read the bundled beetle");
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(mesh);
+  const double diagonal =
+      std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                CGAL::square(box.zmax() - box.zmin()));
+  const HB::Point wanted(0.04, box.ymax(), -0.12);
+  centre = *vertices(mesh).begin();
+  for (auto v : vertices(mesh))
+    if (CGAL::squared_distance(mesh.point(v), wanted) <
+        CGAL::squared_distance(mesh.point(centre), wanted))
+      centre = v;
+  const HB::Point c = mesh.point(centre);
+  const double radius = 0.6 * 0.07 * diagonal, depth = 0.006 * diagonal;
+  std::vector<std::pair<HB::vertex_descriptor, HB::Point>> moved;
+  for (auto v : vertices(mesh)) {
+    const double r2 = CGAL::squared_distance(mesh.point(v), c) / (radius * radius);
+    if (r2 < 1)
+      moved.emplace_back(v, mesh.point(v) -
+                                depth * (1 - r2) * (1 - r2) * (1 - r2) *
+                                    CGAL::Polygon_mesh_processing::compute_vertex_normal(v, mesh));
+  }
+  for (const auto& m : moved)
+    mesh.point(m.first) = m.second;
+  return mesh;
+}
+
+bool holds(const HB::Mesh& mesh, const HB::Irregularity& r, HB::vertex_descriptor v)
+{
+  for (auto f : r.faces)
+    for (auto w : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+      if (w == v)
+        return true;
+  return false;
+}
+
+// The detection of the demo's --detect mode (60 lines, 3 x 4 light setups).
+TEST(Detection, TheDemoRoofDentComesFirst)
+{
+  HB::vertex_descriptor centre;
+  const HB::Mesh mesh = demo_beetle(centre);
+  std::vector<HB::Irregularity> found;
+  CGAL::detect_highlight_line_irregularities(
+      mesh, HL::default_light_setup(mesh, HLP::number_of_lines(60)), std::back_inserter(found),
+      HLP::number_of_offsets(4));
+  ASSERT_FALSE(found.empty());
+  EXPECT_TRUE(holds(mesh, found[0], centre)) << HB::describe(found[0]);
+  EXPECT_EQ(found[0].kind, HL::Irregularity_kind::DENT);
+  EXPECT_GE(found[0].confidence, 0.5);
+  // Everything else found is the car's design, and says so.
+  for (std::size_t i = 1; i < found.size(); ++i) {
+    EXPECT_LT(found[i].confidence, 0.5) << HB::describe(found[i]);
+  }
+}
+
+// Dents and bumps 0.2 ē high anywhere on two shared CAD meshes (seeded, 2 x 4 per mesh): the
+// sweep from all sides finds most of them (benchmark_detection --shared: 0.625 and 0.75; with
+// the plane of the default lights only, 0 and 0.625). Issue 16 asks for 0.9: not reached yet.
+TEST(Detection, FindsMostSmallDefectsAnywhereOnSharedCadMeshes)
+{
+  for (const char* name : {"fandisk.off", "rocker-arm.off"}) {
+    HB::Mesh original;
+    std::ifstream in(test::shared_data(name));
+    if (!in || !CGAL::IO::read_OFF(in, original))
+      GTEST_SKIP() << "shared mesh " << name << " not found";
+    HB::Detection_score total;
+    for (unsigned seed = 1; seed <= 2; ++seed) {
+      HB::Mesh mesh = original;
+      const auto defects = HB::inject_defects(mesh, 4, 5.0, 0.2, seed, [](auto) { return true; });
+      const HB::Detection_score s = HB::match(mesh, defects, detect(mesh));
+      total.defects += s.defects;
+      total.found_defects += s.found_defects;
+    }
+    EXPECT_EQ(total.defects, 8u) << name;
+    EXPECT_GE(total.recall(), 0.6) << name;
+  }
+}
+
 // --- Invariances --------------------------------------------------------------------------
 
 std::set<std::array<std::size_t, 3>> face_keys(const HB::Mesh& mesh, const HB::Irregularity& r)
@@ -323,6 +482,37 @@ TEST(Detection, IndependentOfFaceOrderAndMeshType)
     EXPECT_EQ(face_keys(mesh, a[i]), keys);
     EXPECT_NEAR(a[i].score, c[i].score, 1e-9 * a[i].score);
   }
+}
+
+TEST(Detection, ReportsProgressCanBeCancelledAndRunsInParallel)
+{
+  HB::Mesh mesh = smooth_hood(7, 40);
+  ASSERT_EQ(HB::inject_defects(mesh, 1, 4.0, 0.5, 7, [](auto) { return true; }).size(), 1u);
+  const auto lights = HL::default_light_setup(mesh, HLP::number_of_lines(30));
+  std::vector<double> progress;
+  std::vector<HB::Irregularity> found, cancelled, parallel;
+  CGAL::detect_highlight_line_irregularities(mesh, lights, std::back_inserter(found),
+                                             CGAL::parameters::callback([&](double f) {
+                                               progress.push_back(f);
+                                               return true;
+                                             }));
+  ASSERT_EQ(progress.size(), 6u * 3u * 2u); // 6 planes x 3 orientations x 2 offsets
+  EXPECT_TRUE(std::is_sorted(progress.begin(), progress.end()));
+  EXPECT_DOUBLE_EQ(progress.back(), 1.0);
+  ASSERT_EQ(found.size(), 1u);
+  std::size_t calls = 0;
+  CGAL::detect_highlight_line_irregularities(
+      mesh, lights, std::back_inserter(cancelled),
+      CGAL::parameters::callback([&](double) { return ++calls < 3; }));
+  EXPECT_EQ(calls, 3u);
+  EXPECT_TRUE(cancelled.empty());
+#ifdef CGAL_LINKED_WITH_TBB
+  CGAL::detect_highlight_line_irregularities<CGAL::Parallel_tag>(mesh, lights,
+                                                                 std::back_inserter(parallel));
+  ASSERT_EQ(parallel.size(), found.size());
+  EXPECT_EQ(face_keys(mesh, parallel[0]), face_keys(mesh, found[0]));
+  EXPECT_DOUBLE_EQ(parallel[0].score, found[0].score);
+#endif
 }
 
 // --- Bad input ----------------------------------------------------------------------------
@@ -436,6 +626,36 @@ TEST(DetectAndFair, SurfaceMeshAndPolyhedronAgree)
     EXPECT_LT(
         CGAL::squared_distance(v->point(), mesh.point(HB::vertex_descriptor(std::uint32_t(i++)))),
         1e-20);
+}
+
+TEST(DetectAndFair, FairsTheDemoRoofDentAndLeavesTheDesignAlone)
+{
+  HB::vertex_descriptor centre;
+  HB::Mesh mesh = demo_beetle(centre);
+  const HB::Mesh dented = mesh;
+  const auto repairs = CGAL::detect_and_fair_highlight_line_irregularities(
+      mesh, HL::default_light_setup(mesh, HLP::number_of_lines(60)),
+      HLP::combine(HLP::number_of_offsets(4), CGAL::parameters::number_of_iterations(3)));
+  ASSERT_GE(repairs.size(), 2u);
+  EXPECT_TRUE(holds(mesh, repairs[0].irregularity, centre));
+  EXPECT_TRUE(repairs[0].repaired) << repairs[0].failure;
+  EXPECT_FALSE(repairs[0].skipped);
+  std::set<HB::vertex_descriptor> movable;
+  HL::movable_vertices(mesh, repairs[0].irregularity.faces, std::inserter(movable, movable.end()));
+  for (std::size_t i = 1; i < repairs.size(); ++i) {
+    EXPECT_TRUE(repairs[i].skipped) << HB::describe(repairs[i].irregularity);
+    EXPECT_FALSE(repairs[i].repaired);
+    EXPECT_NE(repairs[i].failure.find("skipped"), std::string::npos);
+  }
+  // Nothing but the roof moved.
+  for (auto v : vertices(mesh))
+    if (movable.count(v) == 0) {
+      EXPECT_EQ(mesh.point(v), dented.point(v));
+    }
+  HB::Mesh other = dented;
+  EXPECT_THROW(CGAL::detect_and_fair_highlight_line_irregularities(
+                   other, HL::default_light_setup(other), HLP::minimum_confidence(1.5)),
+               HL::Invalid_input);
 }
 
 TEST(DetectAndFair, RecordsRegionsThatCannotBeFairedAndGoesOn)

@@ -4,7 +4,9 @@
 #ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_ANOMALY_REGIONS_H
 #define CGAL_HIGHLIGHT_LINES_INTERNAL_ANOMALY_REGIONS_H
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <set>
 #include <utility>
@@ -66,8 +68,10 @@ private:
   std::vector<int> neighbours_;
 };
 
-// Marks in `inside` every vertex within `rings` edges of a marked one.
-inline void grow_by_rings(const Vertex_adjacency& adjacency, int rings, std::vector<char>& inside)
+// Marks in `inside` every vertex within `rings` edges of a marked one; paths do not pass
+// through `barrier` vertices (optional flags: they are reached, not crossed).
+inline void grow_by_rings(const Vertex_adjacency& adjacency, int rings, std::vector<char>& inside,
+                          const std::vector<char>& barrier = {})
 {
   std::vector<int> front;
   for (int v = 0; v < adjacency.number_of_vertices(); ++v)
@@ -77,20 +81,21 @@ inline void grow_by_rings(const Vertex_adjacency& adjacency, int rings, std::vec
   for (int r = 0; r < rings && !front.empty(); ++r) {
     next.clear();
     for (int v : front)
-      adjacency.for_each_neighbour(v, [&](int w) {
-        if (!inside[std::size_t(w)]) {
-          inside[std::size_t(w)] = 1;
-          next.push_back(w);
-        }
-      });
+      if (barrier.empty() || !barrier[std::size_t(v)])
+        adjacency.for_each_neighbour(v, [&](int w) {
+          if (!inside[std::size_t(w)]) {
+            inside[std::size_t(w)] = 1;
+            next.push_back(w);
+          }
+        });
     front.swap(next);
   }
 }
 
 // Labels the edge-connected components of the marked vertices (unmarked: -1); returns their
-// number.
+// number. `barrier` vertices (optional flags) are labelled but connect nothing.
 inline int label_components(const Vertex_adjacency& adjacency, const std::vector<char>& inside,
-                            std::vector<int>& label)
+                            std::vector<int>& label, const std::vector<char>& barrier = {})
 {
   label.assign(inside.size(), -1);
   int components = 0;
@@ -103,6 +108,8 @@ inline int label_components(const Vertex_adjacency& adjacency, const std::vector
     while (!stack.empty()) {
       const int v = stack.back();
       stack.pop_back();
+      if (!barrier.empty() && barrier[std::size_t(v)])
+        continue;
       adjacency.for_each_neighbour(v, [&](int w) {
         if (inside[std::size_t(w)] && label[std::size_t(w)] < 0) {
           label[std::size_t(w)] = components;
@@ -117,44 +124,104 @@ inline int label_components(const Vertex_adjacency& adjacency, const std::vector
 
 // Groups anomalies into disjoint face regions:
 // 1. anomalies closer than `join_rings` edges belong to one cluster;
-// 2. a cluster seen in fewer than `minimum_setups` light setups is dropped: a defect bends
-//    the lines of every direction, while triangulation noise rarely lines up across setups;
+// 2. a cluster seen in fewer light setups than the largest `minimum_setups[v]` of its
+//    anomalies' vertices is dropped: a defect bends the lines of every direction, while
+//    triangulation noise rarely lines up across setups;
 // 3. the remaining clusters grow by `margin_rings` edges, clusters that meet merge, and each
 //    region is the set of faces with a vertex in the grown cluster.
+// `barrier` (optional, one flag per vertex: the vertices of sharp edges): clusters and margins
+// reach these vertices but never grow through them, so no region crosses a feature line; a
+// face goes to the region of one of its vertices off the barrier if it has one.
+inline std::vector<Anomaly_region> group_anomalies(const std::vector<std::array<int, 3>>& faces,
+                                                   int number_of_vertices,
+                                                   const std::vector<Anomaly>& anomalies,
+                                                   int join_rings, int margin_rings,
+                                                   const std::vector<std::size_t>& minimum_setups,
+                                                   const std::vector<char>& barrier = {})
+{
+  const Vertex_adjacency adjacency(faces, number_of_vertices);
+  std::vector<char> inside(std::size_t(number_of_vertices), 0);
+  for (const Anomaly& a : anomalies)
+    inside[std::size_t(a.vertex)] = 1;
+  grow_by_rings(adjacency, join_rings, inside, barrier);
+  std::vector<int> label;
+  const int clusters = label_components(adjacency, inside, label, barrier);
+
+  std::vector<std::set<std::size_t>> setups(static_cast<std::size_t>(clusters));
+  std::vector<std::size_t> required(static_cast<std::size_t>(clusters), 1);
+  for (const Anomaly& a : anomalies) {
+    const std::size_t c = std::size_t(label[std::size_t(a.vertex)]);
+    setups[c].insert(a.setup);
+    required[c] = (std::max)(required[c], minimum_setups[std::size_t(a.vertex)]);
+  }
+  for (std::size_t v = 0; v < inside.size(); ++v)
+    if (inside[v] && setups[std::size_t(label[v])].size() < required[std::size_t(label[v])])
+      inside[v] = 0;
+  grow_by_rings(adjacency, margin_rings, inside, barrier);
+  const int components = label_components(adjacency, inside, label, barrier);
+
+  std::vector<Anomaly_region> regions(static_cast<std::size_t>(components));
+  auto on_barrier = [&](int v) { return !barrier.empty() && barrier[std::size_t(v)]; };
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    int chosen = -1;
+    for (int pass = 0; pass < 2 && chosen < 0; ++pass)
+      for (int v : faces[f])
+        if (chosen < 0 && label[std::size_t(v)] >= 0 && (pass == 1 || !on_barrier(v)))
+          chosen = label[std::size_t(v)];
+    if (chosen >= 0)
+      regions[std::size_t(chosen)].faces.push_back(int(f));
+  }
+  for (std::size_t i = 0; i < anomalies.size(); ++i)
+    if (label[std::size_t(anomalies[i].vertex)] >= 0)
+      regions[std::size_t(label[std::size_t(anomalies[i].vertex)])].anomalies.push_back(i);
+  return regions;
+}
+
 inline std::vector<Anomaly_region> group_anomalies(const std::vector<std::array<int, 3>>& faces,
                                                    int number_of_vertices,
                                                    const std::vector<Anomaly>& anomalies,
                                                    int join_rings, int margin_rings,
                                                    std::size_t minimum_setups)
 {
-  const Vertex_adjacency adjacency(faces, number_of_vertices);
-  std::vector<char> inside(std::size_t(number_of_vertices), 0);
-  for (const Anomaly& a : anomalies)
-    inside[std::size_t(a.vertex)] = 1;
-  grow_by_rings(adjacency, join_rings, inside);
-  std::vector<int> label;
-  const int clusters = label_components(adjacency, inside, label);
+  return group_anomalies(faces, number_of_vertices, anomalies, join_rings, margin_rings,
+                         std::vector<std::size_t>(std::size_t(number_of_vertices), minimum_setups));
+}
 
-  std::vector<std::set<std::size_t>> setups(static_cast<std::size_t>(clusters));
-  for (const Anomaly& a : anomalies)
-    setups[std::size_t(label[std::size_t(a.vertex)])].insert(a.setup);
-  for (std::size_t v = 0; v < inside.size(); ++v)
-    if (inside[v] && setups[std::size_t(label[v])].size() < minimum_setups)
-      inside[v] = 0;
-  grow_by_rings(adjacency, margin_rings, inside);
-  const int components = label_components(adjacency, inside, label);
-
-  std::vector<Anomaly_region> regions(static_cast<std::size_t>(components));
-  for (std::size_t f = 0; f < faces.size(); ++f)
-    for (int v : faces[f])
-      if (label[std::size_t(v)] >= 0) {
-        regions[std::size_t(label[std::size_t(v)])].faces.push_back(int(f));
-        break;
+// The square roots of the two largest eigenvalues of the symmetric 3 x 3 matrix `c` (a
+// covariance): the standard deviations along its two main axes (Jacobi rotations).
+inline std::array<double, 2> largest_spreads(const double (&c)[3][3])
+{
+  double a[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      a[i][j] = c[i][j];
+  for (int sweep = 0; sweep < 50; ++sweep) {
+    const double off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
+    if (!(off > 1e-30 * (a[0][0] * a[0][0] + a[1][1] * a[1][1] + a[2][2] * a[2][2])))
+      break;
+    for (int p = 0; p < 2; ++p)
+      for (int q = p + 1; q < 3; ++q) {
+        if (a[p][q] == 0)
+          continue;
+        const double theta = (a[q][q] - a[p][p]) / (2 * a[p][q]);
+        const double t =
+            (theta >= 0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1));
+        const double cs = 1 / std::sqrt(t * t + 1), sn = t * cs;
+        for (int k = 0; k < 3; ++k) { // columns
+          const double kp = a[k][p], kq = a[k][q];
+          a[k][p] = cs * kp - sn * kq;
+          a[k][q] = sn * kp + cs * kq;
+        }
+        for (int k = 0; k < 3; ++k) { // rows
+          const double pk = a[p][k], qk = a[q][k];
+          a[p][k] = cs * pk - sn * qk;
+          a[q][k] = sn * pk + cs * qk;
+        }
       }
-  for (std::size_t i = 0; i < anomalies.size(); ++i)
-    if (label[std::size_t(anomalies[i].vertex)] >= 0)
-      regions[std::size_t(label[std::size_t(anomalies[i].vertex)])].anomalies.push_back(i);
-  return regions;
+  }
+  std::array<double, 3> e{a[0][0], a[1][1], a[2][2]};
+  std::sort(e.begin(), e.end(), [](double x, double y) { return x > y; });
+  return {std::sqrt((std::max)(e[0], 0.0)), std::sqrt((std::max)(e[1], 0.0))};
 }
 
 } // namespace internal
