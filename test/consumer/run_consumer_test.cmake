@@ -29,7 +29,7 @@ if(NOT CONSUMER_MODE)
 endif()
 get_filename_component(package_source_dir "${CONSUMER_SOURCE_DIR}/../.." ABSOLUTE)
 # The consumer's own Release flags (add_subdirectory mode): the package must not replace them.
-set(consumer_release_flags "-O2 -DNDEBUG -DHIGHLIGHT_LINES_CONSUMER_OWN_FLAGS")
+set(consumer_release_flags "-O1 -DNDEBUG -DHIGHLIGHT_LINES_CONSUMER_OWN_FLAGS")
 
 # A fresh build directory: the test must see what a new user sees.
 file(REMOVE_RECURSE "${CONSUMER_BINARY_DIR}")
