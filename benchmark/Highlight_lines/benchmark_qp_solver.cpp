@@ -9,7 +9,7 @@
 // boundary ring fixed), plus a sum of rank-one terms  j j^T  whose supports are those of the
 // highlight nodes of the fairing (the two ends of an edge crossing a level line and their
 // one-rings), plus bounds  |x_i| <= half the shortest edge at vertex i  -- the matrix and
-// bounds of the fairing QP (SPEC §4). The linear term is built from a known solution: a
+// bounds of the fairing QP (eq. 16 of the paper). The linear term is built from a known solution: a
 // smooth displacement field clamped to the bounds, with positive multipliers on the clamped
 // variables, so that exactly the requested fraction of bounds is active at the optimum; the
 // benchmark checks the solution found against it.

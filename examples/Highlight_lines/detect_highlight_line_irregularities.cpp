@@ -12,6 +12,7 @@
 
 #include "command_line.h"
 #include "highlight_picture.h"
+#include "mesh_io.h"
 #include "region_overview.h"
 
 #include <array>
@@ -34,9 +35,11 @@ namespace {
 const char* usage =
     "usage: detect_highlight_line_irregularities [MESH] [options]\n"
     "\n"
-    "Sweeps a light tunnel over a triangle mesh (OFF, OBJ or PLY), finds where the highlight\n"
-    "lines bend abnormally, prints the regions found and writes PREFIX.png (regions tinted,\n"
-    "strongest in red) and PREFIX.regions.txt (one line of face indices per region).\n"
+    "Sweeps a light tunnel over a triangle mesh (OFF, OBJ, PLY or STL; polygon soups are\n"
+    "repaired and polygons triangulated), finds where the highlight lines bend abnormally,\n"
+    "prints the regions found and writes PREFIX.png (regions tinted, strongest in red),\n"
+    "PREFIX.regions.txt (one line of face indices per region) and, per region,\n"
+    "PREFIX.region_N.selection.txt (a CGAL Lab selection file).\n"
     "MESH defaults to the bundled VW Beetle body.\n"
     "\n"
     "options:\n"
@@ -103,7 +106,7 @@ int main(int argc, char** argv)
   command_line::program() = "detect_highlight_line_irregularities";
   const Options o = parse(argc, argv);
   Mesh mesh;
-  if (!CGAL::IO::read_polygon_mesh(o.mesh, mesh) || is_empty(mesh)) {
+  if (!mesh_io::read_triangle_mesh(o.mesh, mesh)) {
     std::cerr << "detect_highlight_line_irregularities: cannot read a polygon mesh from " << o.mesh
               << "\n";
     return 1;
@@ -129,9 +132,17 @@ int main(int argc, char** argv)
                 << " rad, seen on " << r.number_of_lines << " lines in " << r.number_of_light_setups
                 << " light setups, " << r.faces.size() << " faces around "
                 << mesh.point(r.peak_vertex) << "\n";
-      for (std::size_t k = 0; k < r.faces.size(); ++k)
-        regions_file << (k ? " " : "") << std::size_t(r.faces[k]);
+      std::vector<std::size_t> ids;
+      for (std::size_t k = 0; k < r.faces.size(); ++k) {
+        ids.push_back(std::size_t(r.faces[k]));
+        regions_file << (k ? " " : "") << ids.back();
+      }
       regions_file << "\n";
+      const std::string selection = o.out + ".region_" + std::to_string(i + 1) + ".selection.txt";
+      if (!mesh_io::write_selection(selection, ids)) {
+        std::cerr << "detect_highlight_line_irregularities: cannot write " << selection << "\n";
+        return 1;
+      }
     }
 
     // The picture: the whole mesh from above the light plane, the regions tinted (red: the

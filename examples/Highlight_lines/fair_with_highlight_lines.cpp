@@ -18,6 +18,7 @@
 
 #include "command_line.h"
 #include "highlight_picture.h"
+#include "mesh_io.h"
 #include "mesh_picture.h"
 #include "region_overview.h"
 
@@ -41,10 +42,10 @@ namespace {
 const char* usage =
     "usage: fair_with_highlight_lines [MESH] [options]\n"
     "\n"
-    "Fairs a region of a triangle mesh so that the surface and its highlight lines become\n"
-    "smooth: writes\n"
-    "PREFIX.png (before / after, close-up), PREFIX_faired.off and, when a dent was added,\n"
-    "PREFIX_dented.off.\n"
+    "Fairs a region of a triangle mesh (OFF, OBJ, PLY or STL; polygon soups are repaired and\n"
+    "polygons triangulated) so that the surface and its highlight lines become smooth: writes\n"
+    "PREFIX.png (before / after, close-up), PREFIX_faired.EXT and, when a dent was added,\n"
+    "PREFIX_dented.EXT, in the format of MESH (EXT: its extension).\n"
     "MESH defaults to the bundled VW Beetle body, into whose roof a dent is pressed first.\n"
     "\n"
     "options:\n"
@@ -54,7 +55,8 @@ const char* usage =
     "                        axis of smallest extent\n"
     "  --radius R            region radius: faces whose three vertices lie within R of the\n"
     "                        centre (default: 7 % of the bounding box diagonal)\n"
-    "  --region FILE         region as a file of face indices (whitespace separated) instead\n"
+    "  --region FILE         region as a file of face indices (whitespace separated), or as a\n"
+    "                        CGAL Lab selection file (*.selection.txt: its face ids), instead\n"
     "  --dent DEPTH          press a smooth dent of this depth into the region first, along the\n"
     "                        normals (default: 0.6 % of the diagonal for the bundled beetle,\n"
     "                        none for a user's mesh); 0 for none\n"
@@ -319,12 +321,12 @@ int detect_and_fair(Mesh& mesh, const Options& o)
                          "after: " + std::to_string(repaired) + " faired"},
                         layout);
   if (!pic::write_png(o.out + "_regions.png", both) ||
-      !CGAL::IO::write_polygon_mesh(o.out + "_faired.off", mesh,
-                                    CGAL::parameters::stream_precision(17))) {
+      !mesh_io::write_mesh(o.out + "_faired" + mesh_io::output_extension(o.mesh), mesh)) {
     std::cerr << "fair_with_highlight_lines: cannot write the output files\n";
     return 1;
   }
-  std::cout << "wrote " << o.out << "_regions.png and " << o.out << "_faired.off\n";
+  std::cout << "wrote " << o.out << "_regions.png and " << o.out << "_faired"
+            << mesh_io::output_extension(o.mesh) << "\n";
   return 0;
 }
 
@@ -335,7 +337,7 @@ int main(int argc, char** argv)
   command_line::program() = "fair_with_highlight_lines";
   const Options o = parse(argc, argv);
   Mesh mesh;
-  if (!CGAL::IO::read_polygon_mesh(o.mesh, mesh) || is_empty(mesh)) {
+  if (!mesh_io::read_triangle_mesh(o.mesh, mesh)) {
     std::cerr << "fair_with_highlight_lines: cannot read a polygon mesh from " << o.mesh << "\n";
     return 1;
   }
@@ -367,16 +369,11 @@ int main(int argc, char** argv)
 
     std::vector<face_descriptor> region;
     if (!o.region_file.empty()) {
-      std::ifstream in(o.region_file);
-      long long id;
-      while (in >> id) {
-        if (id < 0 || id >= (long long)num_faces(mesh))
-          fail("face index " + std::to_string(id) + " in " + o.region_file +
-               " is not a face of the mesh");
+      std::string error;
+      for (std::size_t id : mesh_io::read_region(o.region_file, num_faces(mesh), error))
         region.push_back(face_descriptor(std::uint32_t(id)));
-      }
-      if (!in.eof())
-        fail("cannot read face indices from " + o.region_file);
+      if (!error.empty())
+        fail(error);
     } else {
       for (auto f : faces(mesh)) {
         bool inside = true;
@@ -418,8 +415,7 @@ int main(int argc, char** argv)
         mesh.point(m.first) = m.second;
       std::cout << "pressed a dent of depth " << dent << " and radius " << dent_radius
                 << " into the surface (" << moved.size() << " vertices moved)\n";
-      CGAL::IO::write_polygon_mesh(o.out + "_dented.off", mesh,
-                                   CGAL::parameters::stream_precision(17));
+      mesh_io::write_mesh(o.out + "_dented" + mesh_io::output_extension(o.mesh), mesh);
     }
 
     if (o.detect)
@@ -492,12 +488,12 @@ int main(int argc, char** argv)
                            "after " + std::to_string(report.iterations) + " iterations"},
                           layout);
     if (!pic::write_png(o.out + ".png", both) ||
-        !CGAL::IO::write_polygon_mesh(o.out + "_faired.off", mesh,
-                                      CGAL::parameters::stream_precision(17))) {
+        !mesh_io::write_mesh(o.out + "_faired" + mesh_io::output_extension(o.mesh), mesh)) {
       std::cerr << "fair_with_highlight_lines: cannot write the output files\n";
       return 1;
     }
-    std::cout << "wrote " << o.out << ".png and " << o.out << "_faired.off (blue: the desired "
+    std::cout << "wrote " << o.out << ".png and " << o.out << "_faired"
+              << mesh_io::output_extension(o.mesh) << " (blue: the desired "
               << "highlight lines; tinted: the region)\n";
   } catch (const HL::Invalid_input& e) {
     std::cerr << "fair_with_highlight_lines: " << e.what() << "\n";

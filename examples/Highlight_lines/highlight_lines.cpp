@@ -14,6 +14,7 @@
 
 #include "command_line.h"
 #include "highlight_picture.h"
+#include "mesh_io.h"
 #include "mesh_picture.h"
 
 #include <algorithm>
@@ -35,8 +36,9 @@ namespace {
 const char* usage =
     "usage: highlight_lines [MESH] [options]\n"
     "\n"
-    "Computes the highlight lines of a triangle mesh (OFF, OBJ or PLY) for a row of parallel\n"
-    "tube lights, and writes PREFIX.polylines.txt (CGAL polylines) and PREFIX.png.\n"
+    "Computes the highlight lines of a triangle mesh (OFF, OBJ, PLY or STL; polygon soups are\n"
+    "repaired and polygons triangulated) for a row of parallel tube lights, and writes\n"
+    "PREFIX.polylines.txt (CGAL polylines) and PREFIX.png.\n"
     "MESH defaults to the bundled VW Beetle body.\n"
     "\n"
     "options:\n"
@@ -128,7 +130,7 @@ int main(int argc, char** argv)
   const Options options = parse(argc, argv);
 
   Mesh mesh;
-  if (!CGAL::IO::read_polygon_mesh(options.mesh, mesh) || is_empty(mesh)) {
+  if (!mesh_io::read_triangle_mesh(options.mesh, mesh)) {
     std::cerr << "highlight_lines: cannot read a polygon mesh from " << options.mesh << "\n";
     return 1;
   }

@@ -15,6 +15,8 @@
 
 namespace CGAL {
 
+// One \cgalParam... command per line, as in CGAL's reference pages: not reflowed.
+// clang-format off
 /*!
 \ingroup PkgHighlightLinesRef
 
@@ -53,28 +55,43 @@ the same order).
   \cgalNamedParamsBegin
     \cgalParamNBegin{vertex_point_map}
       \cgalParamDescription{a property map associating points to the vertices of `tm`}
+      \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `GeomTraits::Point_3` as value type}
       \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
     \cgalParamNEnd
-    \cgalParamNBegin{vertex_index_map, face_index_map, halfedge_index_map}
-      \cgalParamDescription{index property maps of the mesh elements}
-      \cgalParamDefault{the internal maps, or dynamic ones initialised here}
+    \cgalParamNBegin{vertex_index_map}
+      \cgalParamDescription{a property map associating to each vertex of `tm` a unique index between `0` and `num_vertices(tm) - 1`}
+      \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `std::size_t` as value type}
+      \cgalParamDefault{an internal property map of `tm` if there is one, otherwise a dynamic one initialised here}
+    \cgalParamNEnd
+    \cgalParamNBegin{face_index_map}
+      \cgalParamDescription{a property map associating to each face of `tm` a unique index between `0` and `num_faces(tm) - 1`}
+      \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type}
+      \cgalParamDefault{an internal property map of `tm` if there is one, otherwise a dynamic one initialised here}
+    \cgalParamNEnd
+    \cgalParamNBegin{halfedge_index_map}
+      \cgalParamDescription{a property map associating to each halfedge of `tm` a unique index between `0` and `num_halfedges(tm) - 1`}
+      \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%halfedge_descriptor` as key type and `std::size_t` as value type}
+      \cgalParamDefault{an internal property map of `tm` if there is one, otherwise a dynamic one initialised here}
     \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::face_range}
-      \cgalParamDescription{a range of faces of `tm`: the model is computed on them only;
-        vertex normals still use the full one-rings, so the result is the whole model
-        restricted to these faces. Time and memory are proportional to the range.}
-      \cgalParamDefault{all faces}
+      \cgalParamDescription{a range of faces of `tm`: the model is computed on them only; vertex normals still use the full one-rings, so the result is the whole model restricted to these faces. Time and memory are proportional to the range.}
+      \cgalParamType{a class model of `ConstRange` with `boost::graph_traits<TriangleMesh>::%face_descriptor` as value type}
+      \cgalParamDefault{all faces of `tm`}
     \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::level_range}
-      \cgalParamDescription{a `std::pair` of integers `(lo, hi)`: only lights with index in
-        `[lo, hi]`}
+      \cgalParamDescription{a pair `(lo, hi)`: only the lights with index `m` in `[lo, hi]` get highlight lines}
+      \cgalParamType{`std::pair<int, int>` (or a pair of other integer types)}
       \cgalParamDefault{all lights}
     \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::max_levels_per_edge}
-      \cgalParamDescription{an edge crossing more levels is skipped together with its faces
-        and counted in `number_of_skipped_edges()`; this bounds the output near where the
-        normals turn parallel to the light plane and `d` grows without bound}
-      \cgalParamDefault{256}
+      \cgalParamDescription{an edge crossing more levels is skipped together with its faces and counted in `number_of_skipped_edges()`; this bounds the output near where the normals turn parallel to the light plane and `d` grows without bound}
+      \cgalParamType{`std::size_t`, at least 1}
+      \cgalParamDefault{`256`}
+    \cgalParamNEnd
+    \cgalParamNBegin{Highlight_lines::parameters::facing_side_only}
+      \cgalParamDescription{if `true`, only the vertices whose normal points towards the light plane (`Z·N > 0`) get highlight lines, as a real reflection would show them; the paper's definition (`false`) uses the whole normal line and also images the lights on the side turned away from them}
+      \cgalParamType{`bool`}
+      \cgalParamDefault{`false`}
     \cgalParamNEnd
   \cgalNamedParamsEnd
 
@@ -87,6 +104,7 @@ domain. Light setups are validated when they are constructed.
 
 \sa `Highlight_lines::Highlight_line_sweeper` to compute models for many light setups.
 */
+// clang-format on
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
           typename GeomTraits, typename PolylineOutputIterator,
           typename NamedParameters = parameters::Default_named_parameters>

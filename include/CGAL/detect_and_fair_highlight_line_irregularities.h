@@ -43,8 +43,9 @@ fairing makes run smoothly
 both (a `fairing_visitor` is called for every iteration of every region), and:
   \cgalNamedParamsBegin
     \cgalParamNBegin{Highlight_lines::parameters::minimum_confidence}
-      \cgalParamDescription{the `confidence` (in [0, 1]) below which a region found is skipped}
-      \cgalParamDefault{0.5}
+      \cgalParamDescription{the `confidence` (in `[0, 1]`) below which a region found is skipped}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`0.5`}
     \cgalParamNEnd
   \cgalNamedParamsEnd
 

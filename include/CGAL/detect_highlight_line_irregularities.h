@@ -144,6 +144,8 @@ bool peak_lies_below_fit(const Local_mesh& local, int peak, const vector3::Vec3&
 } // namespace internal
 } // namespace Highlight_lines
 
+// One \cgalParam... command per line, as in CGAL's reference pages: not reflowed.
+// clang-format off
 /*!
 \ingroup PkgHighlightLinesRef
 
@@ -226,67 +228,89 @@ and the lights together, and independent of the mesh's face order.
 \param np an optional sequence of named parameters among:
   \cgalNamedParamsBegin
     \cgalParamNBegin{Highlight_lines::parameters::number_of_orientations}
-      \cgalParamDescription{number of light directions of the sweep, in [1, 64]}
-      \cgalParamDefault{3}
+      \cgalParamDescription{number of light directions of the sweep, in `[1, 64]`}
+      \cgalParamType{`int`}
+      \cgalParamDefault{`3`}
     \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::number_of_offsets}
-      \cgalParamDescription{number of shifts of the lights per direction, in [1, 64]}
-      \cgalParamDefault{2}
+      \cgalParamDescription{number of shifts of the lights per direction, in `[1, 64]`}
+      \cgalParamType{`int`}
+      \cgalParamDefault{`2`}
     \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::detection_scale}
-      \cgalParamDescription{the scale `w` of the bending measure, in mean edge lengths, in
-        [1, 1000]; defects much smaller than `w` are averaged out, much larger ones look like
-        smooth bending}
-      \cgalParamDefault{3}
+      \cgalParamDescription{the scale `w` of the bending measure, in mean edge lengths, in `[1, 1000]`; defects much smaller than `w` are averaged out, much larger ones look like smooth bending}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`3`}
     \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::detection_threshold}
       \cgalParamDescription{the robust z-score above which a sample is an anomaly}
-      \cgalParamDefault{5}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`5`}
     \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::minimum_bending}
-      \cgalParamDescription{the bending (radians) below which no sample is an anomaly,
-        whatever its score: keeps numerical noise on very regular meshes from counting}
-      \cgalParamDefault{0.01}
+      \cgalParamDescription{the bending (radians) below which no sample is an anomaly, whatever its score: keeps numerical noise on very regular meshes from counting}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`0.01`}
     \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::minimum_evidence}
-      \cgalParamDescription{the fraction of the light setups of the sweep that can see a region
-        (that face it) in which it must show anomalies, in (0, 1]}
-      \cgalParamDefault{0.5}
+      \cgalParamDescription{the fraction of the light setups of the sweep that can see a region (that face it) in which it must show anomalies, in `(0, 1]`}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`0.5`}
     \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::region_margin}
-      \cgalParamDescription{rings of edges added around the anomalies; the fairing needs the
-        defect's whole support inside the region, and the region's border ring is fixed}
-      \cgalParamDefault{2}
+      \cgalParamDescription{rings of edges added around the anomalies; the fairing needs the defect's whole support inside the region, and the region's border ring is fixed}
+      \cgalParamType{`int`}
+      \cgalParamDefault{`2`}
     \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::face_range}
       \cgalParamDescription{search these faces only}
-      \cgalParamDefault{all faces}
+      \cgalParamType{a class model of `ConstRange` with `boost::graph_traits<TriangleMesh>::%face_descriptor` as value type}
+      \cgalParamDefault{all faces of `tm`}
     \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::maximum_incidence_angle}
-      \cgalParamDescription{the largest angle (degrees, in (0, 90]) between a vertex normal and
-        the light plane's normal at which the lines are scored}
-      \cgalParamDefault{60}
+      \cgalParamDescription{the largest angle (degrees, in `(0, 90]`) between a vertex normal and the light plane's normal at which the lines are scored}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`60`}
     \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::all_sides}
-      \cgalParamDescription{whether the sweep also uses the five other sides of a cube around
-        the mesh in the frame of `lights` (so that every face is scored); `false`: the plane of
-        `lights` only, about six times cheaper}
+      \cgalParamDescription{whether the sweep also uses the five other sides of a cube around the mesh in the frame of `lights` (so that every face is scored); `false`: the plane of `lights` only, about six times cheaper}
+      \cgalParamType{`bool`}
       \cgalParamDefault{`true`}
     \cgalParamNEnd
-    \cgalParamNBegin{Highlight_lines::parameters::max_levels_per_edge,
-                     Highlight_lines::parameters::facing_side_only}
-      \cgalParamDescription{as for `compute_highlight_lines()`, for every light setup of the
-        sweep (`level_range` is ignored: the setups are rotated)}
-      \cgalParamDefault{256 and `true`}
+    \cgalParamNBegin{Highlight_lines::parameters::max_levels_per_edge}
+      \cgalParamDescription{as for `compute_highlight_lines()`, for every light setup of the sweep (`level_range` is ignored: the setups are rotated)}
+      \cgalParamType{`std::size_t`}
+      \cgalParamDefault{`256`}
+    \cgalParamNEnd
+    \cgalParamNBegin{Highlight_lines::parameters::facing_side_only}
+      \cgalParamDescription{as for `compute_highlight_lines()`, for every light setup of the sweep}
+      \cgalParamType{`bool`}
+      \cgalParamDefault{`true`}
     \cgalParamNEnd
     \cgalParamNBegin{callback}
-      \cgalParamDescription{a callable `bool f(double)` called after each light setup of the
-        sweep with the fraction of the setups done (in (0, 1]); if it returns `false`, the
-        detection stops and writes no region}
+      \cgalParamDescription{called after each light setup of the sweep with the fraction of the setups done (in `(0, 1]`); if it returns `false`, the detection stops and writes no region}
+      \cgalParamType{a callable with signature `bool(double)`}
       \cgalParamDefault{none}
     \cgalParamNEnd
-    \cgalParamNBegin{vertex_point_map, vertex_index_map, face_index_map, halfedge_index_map}
+    \cgalParamNBegin{vertex_point_map}
       \cgalParamDescription{as for `compute_highlight_lines()`}
+      \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `GeomTraits::Point_3` as value type}
+      \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_index_map}
+      \cgalParamDescription{as for `compute_highlight_lines()`}
+      \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `std::size_t` as value type}
+      \cgalParamDefault{as for `compute_highlight_lines()`}
+    \cgalParamNEnd
+    \cgalParamNBegin{face_index_map}
+      \cgalParamDescription{as for `compute_highlight_lines()`}
+      \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type}
+      \cgalParamDefault{as for `compute_highlight_lines()`}
+    \cgalParamNEnd
+    \cgalParamNBegin{halfedge_index_map}
+      \cgalParamDescription{as for `compute_highlight_lines()`}
+      \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%halfedge_descriptor` as key type and `std::size_t` as value type}
+      \cgalParamDefault{as for `compute_highlight_lines()`}
     \cgalParamNEnd
   \cgalNamedParamsEnd
 
@@ -297,6 +321,7 @@ a named parameter out of its domain. The mesh is only read.
 
 \sa `detect_and_fair_highlight_line_irregularities()` to repair every region found.
 */
+// clang-format on
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
           typename GeomTraits, typename OutputIterator,
           typename NamedParameters = parameters::Default_named_parameters>

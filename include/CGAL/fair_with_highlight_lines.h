@@ -142,6 +142,8 @@ neighborhood(const TriangleMesh& tm, const Face_region<TriangleMesh, FaceIndexMa
 } // namespace internal
 } // namespace Highlight_lines
 
+// One \cgalParam... command per line, as in CGAL's reference pages: not reflowed.
+// clang-format off
 /*!
 \ingroup PkgHighlightLinesRef
 
@@ -200,36 +202,72 @@ mesh and lights.
 \param lights the light setup whose highlight lines are to run smoothly
 \param np an optional sequence of named parameters among:
   \cgalNamedParamsBegin
-    \cgalParamNBegin{vertex_point_map} \cgalParamDescription{a readable and writable property map of
-the vertex points} \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`} \cgalParamNEnd
-    \cgalParamNBegin{face_index_map} \cgalParamDefault{the internal map, or a dynamic one}
-\cgalParamNEnd \cgalParamNBegin{number_of_iterations} \cgalParamDescription{the iteration bound}
-\cgalParamDefault{50} \cgalParamNEnd \cgalParamNBegin{Highlight_lines::parameters::fairness_weight}
-\cgalParamDescription{ω1} \cgalParamDefault{1} \cgalParamNEnd
-    \cgalParamNBegin{Highlight_lines::parameters::difference_weight} \cgalParamDescription{ω2}
-\cgalParamDefault{1} \cgalParamNEnd
-    \cgalParamNBegin{Highlight_lines::parameters::fairness_energy} \cgalParamDescription{the
-fairness term, a `Highlight_lines::Fairness_energy`: the Willmore energy of the paper, its
-normal part (the squared mean curvature), which slivers and folded triangles do not dominate, or
-the variation of the mean curvature (curvature-continuous; the closest repair of real surfaces)}
-\cgalParamDefault{`Highlight_lines::Fairness_energy::WILLMORE`} \cgalParamNEnd
-    \cgalParamNBegin{Highlight_lines::parameters::convergence_threshold} \cgalParamDescription{ε of
-eq. 17} \cgalParamDefault{0.001} \cgalParamNEnd
-    \cgalParamNBegin{Highlight_lines::parameters::qp_solver} \cgalParamDescription{a model of
-`BoxConstrainedQuadraticProgramSolver`, passed with `std::ref`} \cgalParamDefault{a
-`Highlight_lines::Active_set_box_QP_solver`} \cgalParamNEnd
-    \cgalParamNBegin{Highlight_lines::parameters::fairing_visitor} \cgalParamDescription{a callable
-      `bool(const Fairing_report::Iteration&)` called after each iteration; returning `false` stops
-the fairing} \cgalParamDefault{none} \cgalParamNEnd
-    \cgalParamNBegin{Highlight_lines::parameters::neighborhood_rings} \cgalParamDescription{rings of
-faces around the region on which highlight lines are recomputed (the tangents are estimated there)}
-      \cgalParamDefault{3} \cgalParamNEnd
+    \cgalParamNBegin{vertex_point_map}
+      \cgalParamDescription{a property map associating points to the vertices of `tm`; the fairing writes the new positions through it}
+      \cgalParamType{a class model of `ReadWritePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `GeomTraits::Point_3` as value type}
+      \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+    \cgalParamNEnd
+    \cgalParamNBegin{face_index_map}
+      \cgalParamDescription{a property map associating to each face of `tm` a unique index between `0` and `num_faces(tm) - 1`}
+      \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type}
+      \cgalParamDefault{an internal property map of `tm` if there is one, otherwise a dynamic one initialised here}
+    \cgalParamNEnd
+    \cgalParamNBegin{number_of_iterations}
+      \cgalParamDescription{the bound on the number of iterations}
+      \cgalParamType{`unsigned int`}
+      \cgalParamDefault{`50`}
+    \cgalParamNEnd
+    \cgalParamNBegin{Highlight_lines::parameters::fairness_weight}
+      \cgalParamDescription{ω1, the weight of the fairness term `q_fair` in the target function}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`1`}
+    \cgalParamNEnd
+    \cgalParamNBegin{Highlight_lines::parameters::difference_weight}
+      \cgalParamDescription{ω2, the weight of the highlight line term `q_diff` in the target function}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`1`}
+    \cgalParamNEnd
+    \cgalParamNBegin{Highlight_lines::parameters::fairness_energy}
+      \cgalParamDescription{the fairness term: the Willmore energy of the paper, its normal part (the squared mean curvature), which slivers and folded triangles do not dominate, or the variation of the mean curvature (curvature-continuous; the closest repair of real surfaces)}
+      \cgalParamType{`Highlight_lines::Fairness_energy`}
+      \cgalParamDefault{`Highlight_lines::Fairness_energy::WILLMORE`}
+    \cgalParamNEnd
+    \cgalParamNBegin{Highlight_lines::parameters::convergence_threshold}
+      \cgalParamDescription{ε of eq. 17: the fairing has converged when the largest displacement of an iteration is below ε times the mean edge length of the region}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`0.001`}
+    \cgalParamNEnd
+    \cgalParamNBegin{Highlight_lines::parameters::qp_solver}
+      \cgalParamDescription{the solver of the quadratic program of each iteration, passed with `std::ref`}
+      \cgalParamType{a class model of `BoxConstrainedQuadraticProgramSolver`, as a `std::reference_wrapper`}
+      \cgalParamDefault{a `Highlight_lines::Active_set_box_QP_solver`}
+    \cgalParamNEnd
+    \cgalParamNBegin{Highlight_lines::parameters::fairing_visitor}
+      \cgalParamDescription{called after each iteration; returning `false` stops the fairing}
+      \cgalParamType{a callable with signature `bool(const Highlight_lines::Fairing_report::Iteration&)`}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
+    \cgalParamNBegin{Highlight_lines::parameters::neighborhood_rings}
+      \cgalParamDescription{rings of faces around the region on which highlight lines are recomputed (the tangents are estimated there)}
+      \cgalParamType{`int`}
+      \cgalParamDefault{`3`}
+    \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::keep_completed_iterations}
-\cgalParamDescription{on a failure (an exception from the solver's report, the visitor or the point
-map), leave the mesh as after the last completed iteration instead of restoring it to what it was
-before the call} \cgalParamDefault{`false`} \cgalParamNEnd
-    \cgalParamNBegin{Highlight_lines::parameters::level_range, max_levels_per_edge}
-\cgalParamDescription{as for `compute_highlight_lines()`} \cgalParamNEnd \cgalNamedParamsEnd
+      \cgalParamDescription{on a failure (an exception from the solver's report, the visitor or the point map), leave the mesh as after the last completed iteration instead of restoring it to what it was before the call}
+      \cgalParamType{`bool`}
+      \cgalParamDefault{`false`}
+    \cgalParamNEnd
+    \cgalParamNBegin{Highlight_lines::parameters::level_range}
+      \cgalParamDescription{as for `compute_highlight_lines()`}
+      \cgalParamType{`std::pair<int, int>`}
+      \cgalParamDefault{all lights}
+    \cgalParamNEnd
+    \cgalParamNBegin{Highlight_lines::parameters::max_levels_per_edge}
+      \cgalParamDescription{as for `compute_highlight_lines()`}
+      \cgalParamType{`std::size_t`}
+      \cgalParamDefault{`256`}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
 
 \returns a report of the iterations.
 
@@ -242,6 +280,7 @@ iteration limit); the mesh is restored to exactly what it was before the call (o
 exception thrown by the visitor or the property maps restores the mesh in the same way before it
 propagates.
 */
+// clang-format on
 template <typename TriangleMesh, typename FaceRange, typename GeomTraits,
           typename NamedParameters = parameters::Default_named_parameters>
 Highlight_lines::Fairing_report

@@ -1,5 +1,6 @@
-// A program of a user of the package: it is built by a separate CMake project that only
-// add_subdirectory()s the repository and links CGAL::Highlight_lines (see CMakeLists.txt).
+// A program of a user of the package: it is built by a separate CMake project that finds the
+// installed package with find_package(CGAL_Highlight_lines), or add_subdirectory()s the
+// repository, and links CGAL::Highlight_lines (see CMakeLists.txt).
 // It computes highlight lines on a generated mesh, sweeps the lights, fairs a dent, and
 // exits with a non-zero status if anything is not as documented.
 //

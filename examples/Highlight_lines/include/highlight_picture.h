@@ -4,9 +4,10 @@
 //
 // Renders triangle meshes (z-buffered, Lambert + ambient + Blinn specular, smooth or flat,
 // two-sided), 3D polylines and point markers drawn over them with a depth test, captions in a
-// built-in bitmap font, and side-by-side compositions, then writes the result as PNG with its
-// own deflate encoder. Only the C++ standard library is used, so the examples need no image
-// library and no display. Anti-aliasing is done by supersampling the whole picture.
+// built-in bitmap font, and side-by-side compositions, then writes the result as PNG, compressed
+// with zlib (Debian zlib1g-dev). Nothing else but the C++ standard library is used, so the
+// examples need no image library and no display. Anti-aliasing is done by supersampling the
+// whole picture.
 
 #ifndef HIGHLIGHT_PICTURE_H
 #define HIGHLIGHT_PICTURE_H
@@ -23,6 +24,8 @@
 #include <string>
 #include <type_traits>
 #include <vector>
+
+#include <zlib.h>
 
 namespace highlight_picture {
 
@@ -1060,295 +1063,17 @@ inline Image side_by_side(const std::vector<Image>& panels,
 }
 
 // ------------------------------------------------------------------------------------------------
-// PNG writing: CRC-32, Adler-32, deflate (LZ77 + fixed Huffman codes, or stored blocks)
+// PNG writing (zlib compresses and computes the CRC-32 of the chunks)
 // ------------------------------------------------------------------------------------------------
 
-/// CRC-32 as used by PNG and gzip (reflected, polynomial 0xEDB88320). Pass the previous result
-/// as `crc` to continue a running checksum.
-inline std::uint32_t crc32(const std::uint8_t* data, std::size_t size, std::uint32_t crc = 0)
-{
-  static const std::array<std::uint32_t, 256> table = [] {
-    std::array<std::uint32_t, 256> t{};
-    for (std::uint32_t n = 0; n < 256; ++n) {
-      std::uint32_t c = n;
-      for (int k = 0; k < 8; ++k)
-        c = (c & 1) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-      t[n] = c;
-    }
-    return t;
-  }();
-  crc = ~crc;
-  for (std::size_t i = 0; i < size; ++i)
-    crc = table[(crc ^ data[i]) & 0xFF] ^ (crc >> 8);
-  return ~crc;
-}
-
-/// Adler-32 as used by zlib. Pass the previous result as `adler` to continue.
-inline std::uint32_t adler32(const std::uint8_t* data, std::size_t size, std::uint32_t adler = 1)
-{
-  std::uint32_t a = adler & 0xFFFF, b = adler >> 16;
-  while (size > 0) {
-    // 5552 bytes is the most that can be summed before b may overflow 32 bits.
-    const std::size_t chunk = std::min<std::size_t>(size, 5552);
-    for (std::size_t i = 0; i < chunk; ++i) {
-      a += data[i];
-      b += a;
-    }
-    a %= 65521;
-    b %= 65521;
-    data += chunk;
-    size -= chunk;
-  }
-  return (b << 16) | a;
-}
-
-namespace detail {
-
-/// Writes bits least significant first, as deflate packs them.
-class Bit_writer
-{
-public:
-  explicit Bit_writer(std::vector<std::uint8_t>& out) : out_(out) {}
-
-  void put(std::uint32_t bits, int count)
-  {
-    buffer_ |= static_cast<std::uint64_t>(bits) << filled_;
-    filled_ += count;
-    while (filled_ >= 8) {
-      out_.push_back(static_cast<std::uint8_t>(buffer_ & 0xFF));
-      buffer_ >>= 8;
-      filled_ -= 8;
-    }
-  }
-
-  /// Huffman codes are defined most significant bit first.
-  void put_code(std::uint32_t code, int length)
-  {
-    std::uint32_t reversed = 0;
-    for (int i = 0; i < length; ++i)
-      reversed |= ((code >> i) & 1u) << (length - 1 - i);
-    put(reversed, length);
-  }
-
-  void align_to_byte()
-  {
-    if (filled_ > 0)
-      put(0, 8 - filled_);
-  }
-
-private:
-  std::vector<std::uint8_t>& out_;
-  std::uint64_t buffer_ = 0;
-  int filled_ = 0;
-};
-
-inline constexpr std::uint16_t length_base[29] = {3,  4,  5,  6,   7,   8,   9,   10,  11, 13,
-                                                  15, 17, 19, 23,  27,  31,  35,  43,  51, 59,
-                                                  67, 83, 99, 115, 131, 163, 195, 227, 258};
-inline constexpr std::uint8_t length_extra[29] = {0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2,
-                                                  2, 3, 3, 3, 3, 4, 4, 4, 4, 5, 5, 5, 5, 0};
-inline constexpr std::uint16_t distance_base[30] = {
-    1,   2,   3,   4,   5,   7,    9,    13,   17,   25,   33,   49,   65,    97,    129,
-    193, 257, 385, 513, 769, 1025, 1537, 2049, 3073, 4097, 6145, 8193, 12289, 16385, 24577};
-inline constexpr std::uint8_t distance_extra[30] = {0, 0, 0,  0,  1,  1,  2,  2,  3,  3,
-                                                    4, 4, 5,  5,  6,  6,  7,  7,  8,  8,
-                                                    9, 9, 10, 10, 11, 11, 12, 12, 13, 13};
-
-/// Index of the last entry of `base` that is <= value.
-template <std::size_t N, class T>
-int code_index(const T (&base)[N], unsigned value)
-{
-  return static_cast<int>(std::upper_bound(base, base + N, value) - base) - 1;
-}
-
-/// A literal byte (distance == 0) or a back-reference of `length` bytes `distance` back.
-struct Lz77_token
-{
-  std::uint16_t length_or_literal;
-  std::uint16_t distance;
-};
-
-/// LZ77 parse with hash chains and one step of lazy matching (as zlib does): a match is
-/// postponed when the next position starts a longer one.
-inline std::vector<Lz77_token> lz77_parse(const std::uint8_t* data, std::size_t size)
-{
-  constexpr std::size_t window = 32768, window_mask = window - 1;
-  constexpr int hash_bits = 15;
-  constexpr int max_chain = 64;
-  constexpr std::size_t min_match = 3, max_match = 258;
-  constexpr std::size_t lazy_limit = 32; // longer matches are taken at once
-  std::vector<std::int64_t> head(std::size_t(1) << hash_bits, -1), previous(window, -1);
-  std::vector<Lz77_token> tokens;
-  tokens.reserve(size / 2 + 16);
-
-  auto hash = [&](std::size_t i) {
-    const std::uint32_t key =
-        (std::uint32_t(data[i]) << 16) | (std::uint32_t(data[i + 1]) << 8) | data[i + 2];
-    return (key * 2654435761u) >> (32 - hash_bits);
-  };
-  auto insert = [&](std::size_t i) {
-    if (i + min_match <= size) {
-      const std::uint32_t h = hash(i);
-      previous[i & window_mask] = head[h];
-      head[h] = static_cast<std::int64_t>(i);
-    }
-  };
-  // Longest match for position i among earlier inserted positions; returns its length.
-  auto longest_match = [&](std::size_t i, std::size_t& distance) -> std::size_t {
-    if (i + min_match > size)
-      return 0;
-    const std::size_t limit = std::min(max_match, size - i);
-    std::size_t best = 0;
-    std::int64_t candidate = head[hash(i)];
-    for (int chain = 0; chain < max_chain && candidate >= 0; ++chain) {
-      const std::size_t c = static_cast<std::size_t>(candidate);
-      if (c >= i || i - c > window)
-        break;
-      if (data[c + best] == data[i + best]) { // cheap rejection of shorter candidates
-        std::size_t length = 0;
-        while (length < limit && data[c + length] == data[i + length])
-          ++length;
-        if (length > best) {
-          best = length;
-          distance = i - c;
-          if (length == limit)
-            break;
-        }
-      }
-      const std::int64_t next = previous[c & window_mask];
-      if (next >= candidate) // slot reused by a newer position: the chain ends here
-        break;
-      candidate = next;
-    }
-    return best >= min_match ? best : 0;
-  };
-
-  std::size_t i = 0;
-  while (i < size) {
-    std::size_t distance = 0;
-    const std::size_t length = longest_match(i, distance);
-    insert(i);
-    if (length == 0) {
-      tokens.push_back({data[i], 0});
-      ++i;
-      continue;
-    }
-    if (length < lazy_limit && i + 1 < size) {
-      std::size_t next_distance = 0;
-      if (longest_match(i + 1, next_distance) > length) {
-        tokens.push_back({data[i], 0});
-        ++i;
-        continue;
-      }
-    }
-    tokens.push_back({static_cast<std::uint16_t>(length), static_cast<std::uint16_t>(distance)});
-    for (std::size_t k = 1; k < length; ++k)
-      insert(i + k);
-    i += length;
-  }
-  return tokens;
-}
-
-inline void put_fixed_literal(Bit_writer& bits, unsigned symbol)
-{
-  if (symbol < 144)
-    bits.put_code(0x30 + symbol, 8);
-  else if (symbol < 256)
-    bits.put_code(0x190 + (symbol - 144), 9);
-  else if (symbol < 280)
-    bits.put_code(symbol - 256, 7);
-  else
-    bits.put_code(0xC0 + (symbol - 280), 8);
-}
-
-inline std::size_t fixed_literal_bits(unsigned symbol)
-{
-  return symbol < 144 ? 8 : symbol < 256 ? 9 : symbol < 280 ? 7 : 8;
-}
-
-} // namespace detail
-
-/// Raw deflate stream (RFC 1951). Each block uses the fixed Huffman codes, or is stored when
-/// that is smaller (incompressible data grows by only 5 bytes per 64 KiB).
-inline std::vector<std::uint8_t> deflate(const std::uint8_t* data, std::size_t size)
-{
-  using namespace detail;
-  std::vector<std::uint8_t> out;
-  Bit_writer bits(out);
-  const std::vector<Lz77_token> tokens = lz77_parse(data, size);
-  constexpr std::size_t tokens_per_block = 16384;
-  std::size_t input_position = 0;
-  std::size_t first = 0;
-  do {
-    const std::size_t last = std::min(first + tokens_per_block, tokens.size());
-    const bool final_block = last == tokens.size();
-    std::size_t fixed_bits = 3 + 7; // header and end-of-block
-    std::size_t input_length = 0;
-    for (std::size_t t = first; t < last; ++t) {
-      const Lz77_token& token = tokens[t];
-      if (token.distance == 0) {
-        fixed_bits += fixed_literal_bits(token.length_or_literal);
-        ++input_length;
-      } else {
-        const int l = code_index(length_base, token.length_or_literal);
-        const int d = code_index(distance_base, token.distance);
-        fixed_bits += fixed_literal_bits(257 + l) + length_extra[l] + 5 + distance_extra[d];
-        input_length += token.length_or_literal;
-      }
-    }
-    const std::size_t stored_bytes = input_length + 5 * ((input_length + 65534) / 65535 + 1);
-    if (stored_bytes * 8 < fixed_bits) {
-      std::size_t remaining = input_length;
-      do {
-        const std::size_t chunk = std::min<std::size_t>(remaining, 65535);
-        remaining -= chunk;
-        bits.put(final_block && remaining == 0 ? 1 : 0, 1);
-        bits.put(0, 2);
-        bits.align_to_byte();
-        bits.put(static_cast<std::uint32_t>(chunk), 16);
-        bits.put(static_cast<std::uint32_t>(~chunk & 0xFFFF), 16);
-        for (std::size_t k = 0; k < chunk; ++k)
-          bits.put(data[input_position++], 8);
-      } while (remaining > 0);
-    } else {
-      bits.put(final_block ? 1 : 0, 1);
-      bits.put(1, 2); // fixed Huffman codes
-      for (std::size_t t = first; t < last; ++t) {
-        const Lz77_token& token = tokens[t];
-        if (token.distance == 0) {
-          put_fixed_literal(bits, token.length_or_literal);
-          continue;
-        }
-        const int l = code_index(length_base, token.length_or_literal);
-        put_fixed_literal(bits, 257 + l);
-        bits.put(token.length_or_literal - length_base[l], length_extra[l]);
-        const int d = code_index(distance_base, token.distance);
-        bits.put_code(static_cast<std::uint32_t>(d), 5);
-        bits.put(token.distance - distance_base[d], distance_extra[d]);
-      }
-      put_fixed_literal(bits, 256);
-      input_position += input_length;
-    }
-    first = last;
-  } while (first < tokens.size());
-  bits.align_to_byte();
-  return out;
-}
-
-inline std::vector<std::uint8_t> deflate(const std::vector<std::uint8_t>& data)
-{
-  return deflate(data.data(), data.size());
-}
-
-/// zlib stream (RFC 1950): header, deflate data, Adler-32 of the input.
+/// zlib stream (RFC 1950) of `data`, at zlib's best compression.
 inline std::vector<std::uint8_t> zlib_compress(const std::uint8_t* data, std::size_t size)
 {
-  std::vector<std::uint8_t> out = {0x78, 0x9C}; // deflate, 32 KiB window, default level
-  const std::vector<std::uint8_t> body = deflate(data, size);
-  out.insert(out.end(), body.begin(), body.end());
-  const std::uint32_t adler = adler32(data, size);
-  for (int shift = 24; shift >= 0; shift -= 8)
-    out.push_back(static_cast<std::uint8_t>(adler >> shift));
+  uLongf length = compressBound(static_cast<uLong>(size));
+  std::vector<std::uint8_t> out(length);
+  if (compress2(out.data(), &length, data, static_cast<uLong>(size), Z_BEST_COMPRESSION) != Z_OK)
+    throw std::runtime_error("highlight_picture: zlib could not compress the image");
+  out.resize(length);
   return out;
 }
 
@@ -1419,7 +1144,8 @@ inline void append_chunk(std::vector<std::uint8_t>& png, const char type[4],
   const std::size_t type_position = png.size();
   png.insert(png.end(), type, type + 4);
   png.insert(png.end(), payload.begin(), payload.end());
-  const std::uint32_t crc = crc32(png.data() + type_position, 4 + payload.size());
+  const std::uint32_t crc = static_cast<std::uint32_t>(
+      ::crc32(0L, png.data() + type_position, static_cast<uInt>(4 + payload.size())));
   for (int shift = 24; shift >= 0; shift -= 8)
     png.push_back(static_cast<std::uint8_t>(crc >> shift));
 }

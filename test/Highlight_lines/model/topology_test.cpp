@@ -1,4 +1,6 @@
-// Topological guarantees of the node connection (SPEC §3).
+// Topological guarantees of the node connection (§2.4 of the paper): segments never cross
+// inside a triangle, every node has two segments except at borders, undefined vertices and
+// saddles exactly on a level, closed lines come out closed, the face order does not matter.
 #include "test_meshes.h"
 
 #include <CGAL/compute_highlight_lines.h>

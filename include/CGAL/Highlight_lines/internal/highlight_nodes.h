@@ -19,7 +19,9 @@ namespace CGAL {
 namespace Highlight_lines {
 namespace internal {
 
-// Options restricting the model (SPEC §3, "bounded output").
+// Options restricting the model: near silhouettes |d| grows without bound, so one edge can
+// cross thousands of levels; the named parameters level_range and max_levels_per_edge bound
+// the output (edges over the cap are skipped and counted, see compute_highlight_lines()).
 struct Level_window
 {
   long long lowest = -(1LL << 50), highest = (1LL << 50); // levels m considered

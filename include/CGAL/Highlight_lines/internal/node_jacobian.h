@@ -30,7 +30,8 @@ inline double dot3(const Vec3& a, const Vec3& b)
 }
 
 // Derivatives of node positions with respect to the normal displacements x_k of the movable
-// vertices (V_k -> V_k + x_k N_k), for the Gauss–Newton form of q_diff (SPEC §4).
+// vertices (V_k -> V_k + x_k N_k), for the Gauss–Newton form of q_diff,
+// sum_i l_i |Q_i + J_i x - Q~_i|^2, which is convex (see internal/difference_energy.h).
 //
 // A node on edge (V1, V2) at level m sits at Q = V1 + t (V2 - V1), t = (m s - d1)/(d2 - d1)
 // (eq. 13). d of a vertex (eq. 1) depends on its position and, through Ñ (eq. 3), on its

@@ -109,7 +109,8 @@ public:
   double a0() const { return a0_; }
   double a1() const { return a1_; }
 
-  // No loop, cusp or fold: the curve leaves Q0 along +T0 and arrives at Q1 along +T1 (SPEC §4).
+  // No loop, cusp or fold: the curve leaves Q0 along +T0 and arrives at Q1 along +T1
+  // (Yong & Cheng: a0 > 0 and a1 > 0).
   bool keeps_tangent_directions() const
   {
     return status_ == Ogh_curve_status::OK && a0_ > 0 && a1_ > 0;
@@ -274,7 +275,7 @@ struct Ogh_target
 };
 
 // The target for a highlight line between the delimiting nodes Q0 and Q1 with end tangents
-// T0, T1 oriented along the line's direction of travel (SPEC §4).
+// T0, T1 oriented along the line's direction of travel (§3.2 of the paper).
 //
 // Fallback when the single OGH curve fails (a0 <= 0 or a1 <= 0): split at the middle point M
 // of the ordinary cubic Hermite curve whose end tangents have the chord length |D|,

@@ -8,8 +8,9 @@
 //   E = Σ_{i in I_R} A_i ‖K_i‖²,   K_i = 1/(2 A_i) Σ_j (cot α_ij + cot β_ij)(V_i - V_j),
 //   A_i = 1/3 of the area of the triangles around V_i (eq. 7).
 // Eq. 8 as printed lacks the factor 1/2 of the standard cotangent formula; we use the standard
-// one (SPEC §4), so K_i approximates the mean curvature normal 2 H N (‖K‖ = 2 on the unit
-// sphere). A·K² is dimensionless: E does not change under uniform scaling or rigid motions.
+// one (the user manual says so), so K_i approximates the mean curvature normal 2 H N (‖K‖ = 2 on
+// the unit sphere). A·K² is dimensionless: E does not change under uniform scaling or rigid
+// motions.
 //
 // With A_i and the cotangent weights frozen at the current positions and the movable vertices
 // displaced along fixed directions, V̄_k = V_k + x_k N_k, every K_i is affine in x, so

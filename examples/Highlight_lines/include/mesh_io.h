@@ -1,0 +1,151 @@
+// Mesh and region files for the example programs: every mesh format CGAL reads, written back in
+// the format it came in, and regions as face-id lists or CGAL Lab selection files.
+#ifndef HIGHLIGHT_LINES_EXAMPLES_MESH_IO_H
+#define HIGHLIGHT_LINES_EXAMPLES_MESH_IO_H
+
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstddef>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace mesh_io {
+
+// The extension of `path`, lower case, with its dot (".off"), or "" if it has none.
+inline std::string extension(const std::string& path)
+{
+  const std::size_t slash = path.find_last_of("/\\");
+  const std::size_t dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+    return "";
+  std::string e = path.substr(dot);
+  std::transform(e.begin(), e.end(), e.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return e;
+}
+
+// The format to write a mesh read from `input` in: its own if CGAL writes it, otherwise OFF.
+inline std::string output_extension(const std::string& input)
+{
+  const std::string e = extension(input);
+  return e == ".obj" || e == ".ply" || e == ".stl" ? e : ".off";
+}
+
+// Reads a triangle mesh from any format CGAL reads (OFF, OBJ, PLY, STL, by the extension).
+// A file that is not a valid polygon mesh as it stands (a soup: triangles of an STL export
+// that are not consistently oriented, duplicated or degenerate faces, non-manifold edges) is
+// repaired and oriented; faces with more than three corners (quads of a CAD export) are
+// triangulated. Each of these is said in a note on `notes`. Returns false if no face could be read.
+template <typename Mesh>
+bool read_triangle_mesh(const std::string& path, Mesh& mesh, std::ostream& notes = std::cout)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  typedef typename boost::property_traits<
+      typename boost::property_map<Mesh, CGAL::vertex_point_t>::type>::value_type Point;
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  if (!CGAL::IO::read_polygon_soup(path, points, polygons) || polygons.empty())
+    return false;
+  if (!PMP::is_polygon_soup_a_polygon_mesh(polygons)) {
+    const std::size_t read_points = points.size(), read_polygons = polygons.size();
+    PMP::repair_polygon_soup(points, polygons);
+    PMP::orient_polygon_soup(points, polygons);
+    notes << "note: " << path << " is a polygon soup (" << read_points << " points, "
+          << read_polygons << " faces), repaired and oriented into a mesh of " << points.size()
+          << " vertices and " << polygons.size() << " faces; face ids refer to this mesh\n";
+  }
+  mesh.clear();
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  if (is_empty(mesh))
+    return false;
+  std::size_t polygonal = 0;
+  for (auto f : faces(mesh))
+    polygonal += degree(f, mesh) > 3 ? 1 : 0;
+  if (polygonal > 0) {
+    const std::size_t before = num_faces(mesh);
+    if (!PMP::triangulate_faces(mesh))
+      return false;
+    notes << "note: " << polygonal << " of the " << before << " faces of " << path
+          << " have more than three corners: triangulated (" << num_faces(mesh)
+          << " triangles; the first triangle of a face keeps its id, the others are added)\n";
+  }
+  return true;
+}
+
+// Writes `mesh` to `path` (the format by the extension), with all the digits of a double.
+template <typename Mesh>
+bool write_mesh(const std::string& path, const Mesh& mesh)
+{
+  return CGAL::IO::write_polygon_mesh(path, mesh, CGAL::parameters::stream_precision(17));
+}
+
+// Face ids of a region file: either CGAL Lab's selection file (`*.selection.txt`: a line of
+// selected vertex ids, a line of selected face ids, a line of selected edges) whose face line
+// is used, or a plain list of face ids separated by white space. Ids are checked against
+// `number_of_faces`; on any error `error` says what and the result is empty.
+inline std::vector<std::size_t> read_region(const std::string& path, std::size_t number_of_faces,
+                                            std::string& error)
+{
+  std::ifstream in(path);
+  if (!in) {
+    error = "cannot open " + path;
+    return {};
+  }
+  const bool selection = path.size() >= 14 && extension(path) == ".txt" &&
+                         path.compare(path.size() - 14, 14, ".selection.txt") == 0;
+  std::string text;
+  if (selection) {
+    std::string vertex_line;
+    if (!std::getline(in, vertex_line) || !std::getline(in, text)) {
+      error = path + " is not a CGAL Lab selection file (no line of face ids)";
+      return {};
+    }
+  } else {
+    std::ostringstream all;
+    all << in.rdbuf();
+    text = all.str();
+  }
+  std::istringstream ids(text);
+  std::vector<std::size_t> region;
+  long long id;
+  while (ids >> id) {
+    if (id < 0 || id >= (long long)number_of_faces) {
+      error = "face id " + std::to_string(id) + " in " + path + " is not a face of the mesh";
+      return {};
+    }
+    region.push_back(std::size_t(id));
+  }
+  if (!ids.eof()) {
+    error = "cannot read face ids from " + path;
+    return {};
+  }
+  if (region.empty())
+    error = path + " selects no face";
+  return region;
+}
+
+// Writes a region as a CGAL Lab selection file: no vertices, the face ids, no edges.
+inline bool write_selection(const std::string& path, const std::vector<std::size_t>& faces)
+{
+  std::ofstream out(path);
+  out << "\n";
+  for (std::size_t i = 0; i < faces.size(); ++i)
+    out << (i ? " " : "") << faces[i];
+  out << "\n\n";
+  return bool(out);
+}
+
+} // namespace mesh_io
+
+#endif
