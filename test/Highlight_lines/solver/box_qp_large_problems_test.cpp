@@ -222,6 +222,28 @@ TEST(BoxQPLargeProblems, WarmStartOneBoundAwayFromTheOptimumSkipsRefactorisation
   EXPECT_EQ(result.report.factorizations, 1u);
 }
 
+TEST(BoxQPLargeProblems, WarmStartWithoutActiveBoundsActivatesAsAColdStartDoes)
+{
+  // The next program of a fairing whose trust region grew: the last step lies inside the new
+  // bounds, so its warm start knows no active bound. Activating every violated bound then
+  // overshoots as from a cold start; the solver takes the cold start's careful path instead,
+  // here with the same iterations and factorisations (a new solver has no factorisation to
+  // precondition with).
+  const Grid_problem grid(60, 9);
+  const Known_solution problem(grid, 0.05, 0.2);
+  std::vector<double> inside(std::size_t(grid.n));
+  for (int k = 0; k < grid.n; ++k)
+    inside[std::size_t(k)] = 0.; // the cold start's point, given as a warm start
+  Active_set_box_QP_solver cold_solver, warm_solver;
+  const Result cold = solve(cold_solver, grid, problem);
+  const Result warm = solve(warm_solver, grid, problem, &inside);
+  expect_known_solution(grid, problem, cold);
+  expect_known_solution(grid, problem, warm);
+  EXPECT_GT(cold.report.iterations, 2u);
+  EXPECT_EQ(warm.report.iterations, cold.report.iterations);
+  EXPECT_EQ(warm.report.factorizations, cold.report.factorizations);
+}
+
 TEST(BoxQPLargeProblems, WarmStartOnANearbyMatrixIsPreconditionedByTheLastFactorisation)
 {
   // The next program of a fairing: other values of P, a shifted optimum. The factorisation
