@@ -203,8 +203,9 @@ public:
     const internal::Highlight_nodes& nodes = raw_.nodes;
     const internal::Traced_lines& traced = raw_.lines;
 
-    // Nodes that no segment reaches (edges whose faces were all left out, extrema lying
-    // exactly on a level) carry no line; they are sorted last and dropped.
+    // Nodes that no segment reaches (edges whose faces all lie across a pole or join only the
+    // facing window, extrema lying exactly on a level) carry no line; they are sorted last and
+    // dropped, as Model::nodes() documents.
     std::size_t kept = traced.new_order.size();
     while (kept > 0 && traced.degree[std::size_t(traced.new_order[kept - 1])] == 0)
       --kept;
@@ -327,6 +328,8 @@ public:
       throw Invalid_input(Invalid_input::Problem::INVALID_PARAMETER,
                           "max_levels_per_edge must be at least 1");
     window.max_levels_per_edge = std::size_t(cap);
+    window.keep_facing_levels =
+        !choose_parameter(get_parameter(np, internal_np::drop_faces_over_cap), false);
     return window;
   }
 

@@ -30,6 +30,9 @@ struct Level_window
   long long lowest = -(1LL << 50), highest = (1LL << 50); // levels m considered
   std::size_t max_levels_per_edge = 256;           // edges over it keep only the facing window
   long long facing_lowest = 1, facing_highest = 0; // the facing window; empty by default
+  // false: an edge over the cap keeps no level and its faces join none (the rule before the
+  // facing window, which the detection's sweeps keep: their tuning rests on it).
+  bool keep_facing_levels = true;
 
   bool contains(long long m) const { return lowest <= m && m <= highest; }
   // Whether an edge could cross more than max_levels_per_edge levels of the window.
@@ -199,7 +202,7 @@ void set_facing_window(const Vertex_normals& vn, const std::array<double, 3>& z,
 {
   window.facing_lowest = 1;
   window.facing_highest = 0;
-  if (!window.may_trim())
+  if (!window.keep_facing_levels || !window.may_trim())
     return;
   const std::size_t nv = keys.size();
   const Chunks chunks = chunks_for<ConcurrencyTag>(nv, std::size_t(1) << 15);
