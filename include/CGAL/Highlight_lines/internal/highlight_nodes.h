@@ -83,9 +83,10 @@ struct Highlight_nodes
   std::vector<int> edge_first_node;
   std::vector<int> vertex_node; // per model vertex: its node id, written for vertex nodes only
   std::size_t number_of_edge_nodes = 0;
-  std::size_t number_of_capped_edges =
-      0; // edges whose levels beyond the facing window were trimmed
-  std::size_t number_of_trimmed_nodes = 0; // the nodes they would have carried
+  // Edges over max_levels_per_edge that lost levels (beyond the facing window), and the nodes
+  // they would have carried there.
+  std::size_t number_of_capped_edges = 0;
+  std::size_t number_of_trimmed_nodes = 0;
 };
 
 // The lowest level strictly inside an edge whose ends have bands a != b, within the window.
@@ -192,10 +193,11 @@ void for_each_owned_edge(const std::vector<Active_face>& active, const std::vect
   }
 }
 
-// The facing window of a sweep (see Level_window): from the level below the lowest to the
-// level above the highest d value of the vertices facing the light plane within the incidence
-// limit (Z·Ñ >= facing_window_cosine |Ñ|), read from their exact classes; empty if there is none.
-// Only needed, and only computed, when an edge can cross more than max_levels_per_edge levels.
+// The facing window of a sweep (see Level_window): from floor(d/s) of the lowest to
+// floor(d/s) + 1 of the highest d value of the vertices facing the light plane within the
+// incidence limit (Z·Ñ >= facing_window_cosine |Ñ|), read from their exact classes; empty if there
+// is none. Only needed, and only computed, when an edge can cross more than max_levels_per_edge
+// levels.
 template <typename ConcurrencyTag>
 void set_facing_window(const Vertex_normals& vn, const std::array<double, 3>& z,
                        const std::vector<long long>& keys, Level_window& window)
