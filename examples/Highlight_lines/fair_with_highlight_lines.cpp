@@ -45,11 +45,13 @@ const char* usage =
     "Fairs a region of a triangle mesh (OFF, OBJ, PLY or STL; polygon soups are repaired and\n"
     "polygons triangulated) so that the surface and its highlight lines become smooth: writes\n"
     "PREFIX.png (before / after, close-up), PREFIX_faired.EXT and, when a dent was added,\n"
-    "PREFIX_dented.EXT, in the format of MESH (EXT: its extension).\n"
+    "PREFIX_dented.EXT, in the format of MESH (EXT: its extension) or as --format asks.\n"
     "MESH defaults to the bundled VW Beetle body, into whose roof a dent is pressed first.\n"
     "\n"
     "options:\n"
     "  --out PREFIX          output prefix (default: fairing)\n"
+    "  --format EXT          write the meshes as off, obj, ply or stl (default: the format of\n"
+    "                        MESH, OFF if CGAL does not write it)\n"
     "  --center X Y Z        centre of the region (the nearest vertex is used); default: on the\n"
     "                        roof of the bundled beetle, or the mesh's highest point on the\n"
     "                        axis of smallest extent\n"
@@ -94,6 +96,7 @@ struct Options
   std::string mesh = std::string(HIGHLIGHT_LINES_DATA_DIR) + "/beetle.off";
   bool default_mesh = true;
   std::string out = "fairing";
+  std::string format; // the output meshes' extension, with its dot; empty: the input's
   std::optional<K::Point_3> center;
   std::optional<double> radius, dent, spacing;
   std::optional<K::Vector_3> base, direction, normal;
@@ -117,6 +120,12 @@ Options parse(int argc, char** argv)
       if (++i >= argc)
         fail("missing value after " + a);
       (a == "--out" ? o.out : o.region_file) = argv[i];
+    } else if (a == "--format") {
+      if (++i >= argc)
+        fail("missing value after --format");
+      o.format = mesh_io::format_extension(argv[i]);
+      if (o.format.empty())
+        fail(std::string("--format ") + argv[i] + ": must be off, obj, ply or stl");
     } else if (a == "--center") {
       const double x = number(i, argc, argv), y = number(i, argc, argv), z = number(i, argc, argv);
       o.center = K::Point_3(x, y, z);
@@ -321,12 +330,12 @@ int detect_and_fair(Mesh& mesh, const Options& o)
                          "after: " + std::to_string(repaired) + " faired"},
                         layout);
   if (!pic::write_png(o.out + "_regions.png", both) ||
-      !mesh_io::write_mesh(o.out + "_faired" + mesh_io::output_extension(o.mesh), mesh)) {
+      !mesh_io::write_mesh(o.out + "_faired" + mesh_io::output_extension(o.mesh, o.format), mesh)) {
     std::cerr << "fair_with_highlight_lines: cannot write the output files\n";
     return 1;
   }
   std::cout << "wrote " << o.out << "_regions.png and " << o.out << "_faired"
-            << mesh_io::output_extension(o.mesh) << "\n";
+            << mesh_io::output_extension(o.mesh, o.format) << "\n";
   return 0;
 }
 
@@ -415,7 +424,7 @@ int main(int argc, char** argv)
         mesh.point(m.first) = m.second;
       std::cout << "pressed a dent of depth " << dent << " and radius " << dent_radius
                 << " into the surface (" << moved.size() << " vertices moved)\n";
-      mesh_io::write_mesh(o.out + "_dented" + mesh_io::output_extension(o.mesh), mesh);
+      mesh_io::write_mesh(o.out + "_dented" + mesh_io::output_extension(o.mesh, o.format), mesh);
     }
 
     if (o.detect)
@@ -488,12 +497,13 @@ int main(int argc, char** argv)
                            "after " + std::to_string(report.iterations) + " iterations"},
                           layout);
     if (!pic::write_png(o.out + ".png", both) ||
-        !mesh_io::write_mesh(o.out + "_faired" + mesh_io::output_extension(o.mesh), mesh)) {
+        !mesh_io::write_mesh(o.out + "_faired" + mesh_io::output_extension(o.mesh, o.format),
+                             mesh)) {
       std::cerr << "fair_with_highlight_lines: cannot write the output files\n";
       return 1;
     }
     std::cout << "wrote " << o.out << ".png and " << o.out << "_faired"
-              << mesh_io::output_extension(o.mesh) << " (blue: the desired "
+              << mesh_io::output_extension(o.mesh, o.format) << " (blue: the desired "
               << "highlight lines; tinted: the region)\n";
   } catch (const HL::Invalid_input& e) {
     std::cerr << "fair_with_highlight_lines: " << e.what() << "\n";

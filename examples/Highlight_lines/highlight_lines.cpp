@@ -1,7 +1,7 @@
 // Computes the highlight line model of a triangle mesh and writes it as CGAL polylines and as a
 // picture of the shaded mesh with its highlight lines.
 //
-//   highlight_lines [mesh.off|.obj|.ply] [options]
+//   highlight_lines [mesh.off|.obj|.ply|.stl] [options]
 //
 // With no mesh, the bundled VW Beetle body (data/beetle.off) is used. Run with --help for the
 // options; with no light options, a light tunnel is placed above the mesh automatically
@@ -43,6 +43,13 @@ const char* usage =
     "\n"
     "options:\n"
     "  --out PREFIX            output prefix (default: highlight_lines)\n"
+    "  --mesh-out FILE         also write the mesh as read (triangulated, repaired), in the\n"
+    "                          format of FILE's extension (.off, .obj, .ply or .stl); a .ply\n"
+    "                          file (binary) carries two vertex properties: highlight_distance,\n"
+    "                          the highlight distance d (NaN where the normal points away from\n"
+    "                          the lights), whose contour at m*s is the line of light m, and\n"
+    "                          highlight_level = d/s, whose contour at m is that line: any\n"
+    "                          viewer's contour filter (ParaView, MeshLab) shows the lines\n"
     "  --lines N               with the automatic light setup: about N lights across the\n"
     "                          central part of the surface (default 40)\n"
     "  --base X Y Z            a point of the base light A0     } all four give the light\n"
@@ -68,6 +75,7 @@ struct Options
 {
   std::string mesh = std::string(HIGHLIGHT_LINES_DATA_DIR) + "/beetle.off";
   std::string out = "highlight_lines";
+  std::string mesh_out;
   int lines = 40;
   std::optional<K::Vector_3> base, direction, normal;
   std::optional<double> spacing;
@@ -88,6 +96,12 @@ Options parse(int argc, char** argv)
       if (++i >= argc)
         fail("missing value after --out");
       o.out = argv[i];
+    } else if (a == "--mesh-out") {
+      if (++i >= argc)
+        fail("missing value after --mesh-out");
+      o.mesh_out = argv[i];
+      if (!mesh_io::writable_extension(mesh_io::extension(o.mesh_out)))
+        fail("--mesh-out " + o.mesh_out + ": the extension must be .off, .obj, .ply or .stl");
     } else if (a == "--lines")
       o.lines = int(number(i, argc, argv));
     else if (a == "--base")
@@ -201,6 +215,19 @@ int main(int argc, char** argv)
       return 1;
     }
     std::cout << "wrote " << polylines_path << " and " << picture_path << "\n";
+    if (!options.mesh_out.empty()) {
+      const bool ply = mesh_io::extension(options.mesh_out) == ".ply";
+      if (!(ply ? mesh_io::write_ply_with_highlight_distances(options.mesh_out, mesh, lights, true)
+                : mesh_io::write_mesh(options.mesh_out, mesh))) {
+        std::cerr << "highlight_lines: cannot write " << options.mesh_out << "\n";
+        return 1;
+      }
+      std::cout << "wrote " << options.mesh_out
+                << (ply ? " (vertex properties highlight_distance and highlight_level: the lines "
+                          "are their contours at m*s and m)"
+                        : "")
+                << "\n";
+    }
   } catch (const HL::Invalid_input& e) {
     std::cerr << "highlight_lines: " << e.what() << "\n";
     return 1;

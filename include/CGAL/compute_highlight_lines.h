@@ -84,7 +84,7 @@ the same order).
       \cgalParamDefault{all lights}
     \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::max_levels_per_edge}
-      \cgalParamDescription{an edge crossing more levels is skipped together with its faces and counted in `number_of_skipped_edges()`; this bounds the output near where the normals turn parallel to the light plane and `d` grows without bound}
+      \cgalParamDescription{an edge crossing more levels keeps only the lights imaged where the surface faces the light plane (from the lowest to the highest `d` of the vertices whose unit normal has `Z·N >= 0.05`, about 87 degrees of incidence), and its faces join only those; the nodes beyond are trimmed and counted in `number_of_skipped_edges()` and `number_of_trimmed_nodes()`. This bounds the output near where the normals turn parallel to the light plane and `d` grows without bound, and keeps every line where the surface faces the lights}
       \cgalParamType{`std::size_t`, at least 1}
       \cgalParamDefault{`256`}
     \cgalParamNEnd

@@ -14,6 +14,8 @@
 
 namespace CGAL {
 
+// One \cgalParam... command per line, as in CGAL's reference pages: not reflowed.
+// clang-format off
 /*!
 \ingroup PkgHighlightLinesRef
 
@@ -57,6 +59,7 @@ Exceptions other than `Highlight_lines::Invalid_input` and `Highlight_lines::Fai
 (e.g. from a visitor) propagate, with the region being faired restored as
 `fair_with_highlight_lines()` documents; the regions faired before stay faired.
 */
+// clang-format on
 template <typename TriangleMesh, typename GeomTraits,
           typename NamedParameters = parameters::Default_named_parameters>
 std::vector<Highlight_lines::Irregularity_repair<TriangleMesh>>

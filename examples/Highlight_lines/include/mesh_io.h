@@ -10,6 +10,9 @@
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/Highlight_lines/Highlight_line_sweeper.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh/IO/PLY.h>
 
 #include <algorithm>
 #include <cctype>
@@ -35,11 +38,31 @@ inline std::string extension(const std::string& path)
   return e;
 }
 
-// The format to write a mesh read from `input` in: its own if CGAL writes it, otherwise OFF.
-inline std::string output_extension(const std::string& input)
+// Whether CGAL writes meshes in the format of this extension (".off", ".obj", ".ply", ".stl").
+inline bool writable_extension(const std::string& e)
 {
+  return e == ".off" || e == ".obj" || e == ".ply" || e == ".stl";
+}
+
+// The extension of a format asked for on a command line ("ply", ".PLY", ...), with its dot, or
+// "" if CGAL does not write that format.
+inline std::string format_extension(std::string format)
+{
+  std::transform(format.begin(), format.end(), format.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  if (!format.empty() && format[0] != '.')
+    format = "." + format;
+  return writable_extension(format) ? format : "";
+}
+
+// The format to write a mesh read from `input` in: `asked` (an extension with its dot) if not
+// empty, otherwise the input's own if CGAL writes it, otherwise OFF.
+inline std::string output_extension(const std::string& input, const std::string& asked = "")
+{
+  if (!asked.empty())
+    return asked;
   const std::string e = extension(input);
-  return e == ".obj" || e == ".ply" || e == ".stl" ? e : ".off";
+  return writable_extension(e) ? e : ".off";
 }
 
 // Reads a triangle mesh from any format CGAL reads (OFF, OBJ, PLY, STL, by the extension).
@@ -88,6 +111,51 @@ template <typename Mesh>
 bool write_mesh(const std::string& path, const Mesh& mesh)
 {
   return CGAL::IO::write_polygon_mesh(path, mesh, CGAL::parameters::stream_precision(17));
+}
+
+// The names of the vertex properties write_ply_with_highlight_distances() adds.
+inline const char* highlight_distance_property()
+{
+  return "v:highlight_distance";
+}
+inline const char* highlight_level_property()
+{
+  return "v:highlight_level";
+}
+
+// Writes a Surface_mesh as a binary PLY file with two scalar vertex properties: the highlight
+// distance value d of each vertex (`highlight_distance`, as the library computes it, see
+// Highlight_line_sweeper::highlight_distances()) and d/s (`highlight_level`), NaN where d is
+// undefined or, with `facing_side_only`, where the normal points away from the lights. The
+// highlight line of light m is the contour of highlight_distance at m·s, or of highlight_level
+// at m: any viewer's contour filter (ParaView, MeshLab) draws the lines.
+template <typename Point, typename Lights>
+bool write_ply_with_highlight_distances(const std::string& path,
+                                        const CGAL::Surface_mesh<Point>& mesh, const Lights& lights,
+                                        bool facing_side_only)
+{
+  typedef CGAL::Surface_mesh<Point> Mesh;
+  Mesh copy = mesh; // the properties are written with the mesh; the caller's mesh stays as it is
+  auto distance = copy.template add_property_map<typename Mesh::Vertex_index, double>(
+                          highlight_distance_property(), 0.0)
+                      .first;
+  auto level = copy.template add_property_map<typename Mesh::Vertex_index, double>(
+                       highlight_level_property(), 0.0)
+                   .first;
+  const CGAL::Highlight_lines::Highlight_line_sweeper<Mesh> sweeper(copy);
+  sweeper.highlight_distances(
+      lights, distance, CGAL::Highlight_lines::parameters::facing_side_only(facing_side_only));
+  const double s = CGAL::to_double(lights.spacing());
+  for (auto v : vertices(copy))
+    level[v] = distance[v] / s;
+  std::ostringstream comment;
+  comment.precision(17);
+  comment << "highlight_distance: d of eq. 1; the highlight line of light m is its contour at "
+             "m*s, s = "
+          << s << "\nhighlight_level: d/s; the highlight line of light m is its contour at m";
+  std::ofstream out(path, std::ios::binary);
+  CGAL::IO::set_mode(out, CGAL::IO::BINARY);
+  return CGAL::IO::write_PLY(out, copy, comment.str()) && bool(out);
 }
 
 // Face ids of a region file: either CGAL Lab's selection file (`*.selection.txt`: a line of

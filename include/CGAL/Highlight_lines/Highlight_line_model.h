@@ -24,8 +24,9 @@ highlight lines as sequences of nodes.
 
 Lines are maximal chains of segments through nodes with exactly two segments. A line ends at
 a node with one segment (a mesh border or the border of the face range the model was
-computed on, a vertex whose highlight distance is undefined, an edge skipped because it
-crosses too many levels) or with more than two (a vertex lying exactly on a level at a
+computed on, a vertex whose highlight distance is undefined, a face that joins only the
+lights imaged where the surface faces the light plane because one of its edges crosses too
+many levels) or with more than two (a vertex lying exactly on a level at a
 saddle, where lines meet). Lines that close up are reported closed, without repeating their
 first node.
 
@@ -87,25 +88,46 @@ public:
   Highlight_line_model(const Light_setup<GeomTraits>& lights, std::vector<Node> nodes,
                        std::vector<Line> lines, std::size_t number_of_segments,
                        std::size_t skipped_edges, std::size_t undefined_vertices,
-                       std::size_t out_of_range_vertices)
+                       std::size_t out_of_range_vertices, std::size_t trimmed_nodes = 0)
       : lights_(lights), nodes_(std::move(nodes)), lines_(std::move(lines)),
         number_of_segments_(number_of_segments), skipped_edges_(skipped_edges),
-        undefined_vertices_(undefined_vertices), out_of_range_vertices_(out_of_range_vertices)
+        undefined_vertices_(undefined_vertices), out_of_range_vertices_(out_of_range_vertices),
+        trimmed_nodes_(trimmed_nodes)
   {
   }
   /// \endcond
 
   /// The light setup the model was computed for.
   const Light_setup<GeomTraits>& lights() const { return lights_; }
-  /// All highlight nodes.
+  /*!
+  The highlight nodes that lie on a highlight line: exactly the nodes of `lines()`, numbered
+  in the order the lines visit them. Every node is in at least one line and has `degree >= 1`;
+  every node of a line is here.
+
+  Nodes that no highlight segment reaches are left out: a vertex whose highlight distance
+  equals `m·s` where that level only touches the surface (a local extremum of `d`); the nodes
+  of an edge all of whose faces have a vertex whose `d` is undefined or whose normal points to
+  the other side of the light plane; the nodes, beyond the lights imaged where the surface
+  faces the light plane, of an edge whose faces all join only those lights (see
+  `number_of_skipped_edges()`).
+  */
   const std::vector<Node>& nodes() const { return nodes_; }
   /// All highlight lines.
   const std::vector<Line>& lines() const { return lines_; }
   /// Number of highlight segments (line pieces inside one triangle, or highlight edges).
   std::size_t number_of_segments() const { return number_of_segments_; }
-  /// Number of edges that would carry more nodes than the `max_levels_per_edge` named
-  /// parameter allows; they and their faces were left out, and lines end there.
+  /*!
+  Number of edges that would carry more nodes than the `max_levels_per_edge` named parameter
+  allows and lost some: such an edge keeps only the nodes of the lights imaged where the
+  surface faces the light plane within about 87 degrees (the levels from the lowest to the
+  highest highlight distance value of the vertices whose unit normal `N` has `Z·N >= 0.05`),
+  its faces join only those lights, and the lines of the other lights end there. The nodes
+  left out are counted by `number_of_trimmed_nodes()`.
+  */
   std::size_t number_of_skipped_edges() const { return skipped_edges_; }
+  /// Number of nodes that the edges counted by `number_of_skipped_edges()` would have carried
+  /// beyond the lights imaged where the surface faces the light plane.
+  std::size_t number_of_trimmed_nodes() const { return trimmed_nodes_; }
   /// Number of vertices whose normal is parallel to the light plane (`Z·N = 0`): their
   /// highlight distance is undefined, no node is placed on their edges.
   std::size_t number_of_undefined_vertices() const { return undefined_vertices_; }
@@ -136,7 +158,8 @@ private:
   Light_setup<GeomTraits> lights_;
   std::vector<Node> nodes_;
   std::vector<Line> lines_;
-  std::size_t number_of_segments_, skipped_edges_, undefined_vertices_, out_of_range_vertices_;
+  std::size_t number_of_segments_, skipped_edges_, undefined_vertices_, out_of_range_vertices_,
+      trimmed_nodes_;
 };
 
 } // namespace Highlight_lines

@@ -23,6 +23,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/boost/graph/properties.h>
 
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -185,8 +186,9 @@ public:
       only the lights with index `m` in `[lo, hi]` (default: all).
     - `Highlight_lines::parameters::max_levels_per_edge(n)`: an edge that would carry more
       than `n` nodes (it crosses more than `n` lights: its normals turn almost parallel to
-      the light plane) is skipped with its faces and counted in
-      `Model::number_of_skipped_edges()`. Default: 256.
+      the light plane) keeps only the nodes of the lights imaged where the surface faces the
+      light plane (see `compute_highlight_lines()`); the others are trimmed and counted in
+      `Model::number_of_skipped_edges()` and `Model::number_of_trimmed_nodes()`. Default: 256.
     - `Highlight_lines::parameters::facing_side_only(true)`: only the vertices whose normal
       points towards the light plane (`Z·N > 0`) get highlight lines, as a real reflection
       would show them; the paper's definition (the default, `false`) uses the whole normal
@@ -201,8 +203,9 @@ public:
     const internal::Highlight_nodes& nodes = raw_.nodes;
     const internal::Traced_lines& traced = raw_.lines;
 
-    // Nodes that no segment reaches (edges whose faces were all left out, extrema lying
-    // exactly on a level) carry no line; they are sorted last and dropped.
+    // Nodes that no segment reaches (edges whose faces all lie across a pole or join only the
+    // facing window, extrema lying exactly on a level) carry no line; they are sorted last and
+    // dropped, as Model::nodes() documents.
     std::size_t kept = traced.new_order.size();
     while (kept > 0 && traced.degree[std::size_t(traced.new_order[kept - 1])] == 0)
       --kept;
@@ -228,7 +231,40 @@ public:
     }
     return Model(lights, std::move(model_nodes), std::move(model_lines),
                  raw_.segments.segments.size(), nodes.number_of_capped_edges,
-                 raw_.summary.undefined, raw_.summary.out_of_range);
+                 raw_.summary.undefined, raw_.summary.out_of_range, nodes.number_of_trimmed_nodes);
+  }
+
+  /*!
+  Writes the highlight distance value `d` (eq. 1) of every vertex of the faces the model is
+  computed on into `distances`: the field whose level sets `d = m·s` are the highlight lines
+  (a node lies where the linear interpolation of `d` along an edge equals `m·s`, eq. 4), so
+  that a viewer's contour filter at the values `m·s` draws them. The values are those the
+  model is computed from (a vertex exactly on a level gets exactly `m·s`). A vertex whose `d`
+  is undefined (its normal is parallel to the light plane, or `|d/s| >= 2^50`) gets a quiet
+  NaN, and so does, with `facing_side_only`, a vertex whose normal points away from the light
+  plane.
+
+  \tparam VertexDistanceMap a model of `WritablePropertyMap` with
+  `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `double` as value
+  type
+  \param lights the light setup.
+  \param distances receives the values.
+  \param np an optional sequence of named parameters among
+  `Highlight_lines::parameters::facing_side_only` (default: `false`).
+  */
+  template <typename VertexDistanceMap,
+            typename NamedParameters = CGAL::parameters::Default_named_parameters>
+  void highlight_distances(const Lights& lights, VertexDistanceMap distances,
+                           const NamedParameters& np = CGAL::parameters::default_values()) const
+  {
+    Raw_model model;
+    model.keep_levels = true;
+    classify(lights, model, facing_side_only(np));
+    for (std::size_t v = 0; v < mesh_.number_of_model_vertices; ++v) {
+      const internal::Vertex_level& level = model.levels[v];
+      put(distances, mesh_.vertex_handles[v],
+          level.defined() ? level.distance : std::numeric_limits<double>::quiet_NaN());
+    }
   }
 
   /// Number of faces the model is computed on.
@@ -252,17 +288,22 @@ public:
     internal::Classification_summary summary;
     internal::Highlight_nodes nodes;
     internal::Highlight_segments segments;
-    internal::Traced_lines lines; // node ids in lines are canonical ids: see node()
+    internal::Traced_lines lines;  // node ids in lines are canonical ids: see node()
+    internal::Level_window window; // as used: with the facing window of the sweep
     const internal::Raw_node& node(std::size_t canonical_id) const
     {
       return nodes.nodes[std::size_t(lines.new_order[canonical_id])];
     }
   };
 
-  void compute_raw(const Lights& lights, const internal::Level_window& window,
+  void compute_raw(const Lights& lights, const internal::Level_window& options,
                    bool facing_side_only, Raw_model& out) const
   {
     classify(lights, out, facing_side_only);
+    internal::Level_window window = options;
+    internal::set_facing_window<ConcurrencyTag>(normals_, lights.plane_normal_array(), out.keys,
+                                                window);
+    out.window = window;
     internal::compute_highlight_nodes<ConcurrencyTag>(mesh_, owned_edges_, out.keys, out.distances,
                                                       out.summary.on_level, lights.spacing_value(),
                                                       window, out.nodes);
@@ -287,6 +328,8 @@ public:
       throw Invalid_input(Invalid_input::Problem::INVALID_PARAMETER,
                           "max_levels_per_edge must be at least 1");
     window.max_levels_per_edge = std::size_t(cap);
+    window.keep_facing_levels =
+        !choose_parameter(get_parameter(np, internal_np::drop_faces_over_cap), false);
     return window;
   }
 

@@ -36,6 +36,9 @@ enum region_margin_t { region_margin };
 enum maximum_incidence_angle_t { maximum_incidence_angle };
 enum minimum_confidence_t { minimum_confidence };
 enum all_sides_t { all_sides };
+// Internal, for the detection's sweeps: an edge over max_levels_per_edge is dropped with its
+// faces (the rule before the facing window, see internal::Level_window).
+enum drop_faces_over_cap_t { drop_faces_over_cap };
 } // namespace internal_np
 /// \endcond
 

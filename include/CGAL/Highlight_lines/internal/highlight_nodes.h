@@ -7,6 +7,7 @@
 #include <CGAL/Highlight_lines/internal/Local_mesh.h>
 #include <CGAL/Highlight_lines/internal/level_classification.h>
 #include <CGAL/Highlight_lines/internal/parallel.h>
+#include <CGAL/Highlight_lines/internal/vertex_normals.h>
 
 #include <algorithm>
 #include <array>
@@ -20,15 +21,31 @@ namespace Highlight_lines {
 namespace internal {
 
 // Options restricting the model: near silhouettes |d| grows without bound, so one edge can
-// cross thousands of levels; the named parameters level_range and max_levels_per_edge bound
-// the output (edges over the cap are skipped and counted, see compute_highlight_lines()).
+// cross thousands of levels. The named parameter level_range restricts the levels; an edge
+// crossing more than max_levels_per_edge of them keeps only those of the facing window (the
+// lights imaged where the surface faces the light plane, see set_facing_window()): the levels
+// beyond it are trimmed from the edge, and counted, see compute_highlight_lines().
 struct Level_window
 {
   long long lowest = -(1LL << 50), highest = (1LL << 50); // levels m considered
-  std::size_t max_levels_per_edge = 256;                  // edges over it are skipped
+  std::size_t max_levels_per_edge = 256;           // edges over it keep only the facing window
+  long long facing_lowest = 1, facing_highest = 0; // the facing window; empty by default
+  // false: an edge over the cap keeps no level and its faces join none (the rule before the
+  // facing window, which the detection's sweeps keep: their tuning rests on it).
+  bool keep_facing_levels = true;
 
   bool contains(long long m) const { return lowest <= m && m <= highest; }
+  // Whether an edge could cross more than max_levels_per_edge levels of the window.
+  bool may_trim() const
+  {
+    return highest >= lowest && std::size_t(highest - lowest) >= max_levels_per_edge;
+  }
 };
+
+// The cosine of the incidence limit of the facing window: vertices whose unit normal makes an
+// angle of at most acos(0.05), about 87 degrees, with the normal Z of the light plane (as for
+// the vertices that default_light_setup() spreads the lights over).
+constexpr double facing_window_cosine = 0.05;
 
 // A highlight node (§2.3): on the interior of an edge (edge >= 0) or on a vertex
 // (vertex >= 0) whose d value equals m·s exactly.
@@ -66,7 +83,10 @@ struct Highlight_nodes
   std::vector<int> edge_first_node;
   std::vector<int> vertex_node; // per model vertex: its node id, written for vertex nodes only
   std::size_t number_of_edge_nodes = 0;
+  // Edges over max_levels_per_edge that lost levels (beyond the facing window), and the nodes
+  // they would have carried there.
   std::size_t number_of_capped_edges = 0;
+  std::size_t number_of_trimmed_nodes = 0;
 };
 
 // The lowest level strictly inside an edge whose ends have bands a != b, within the window.
@@ -79,22 +99,31 @@ inline long long first_interior_level(long long band_a, long long band_b,
 // Eq. 4 (corrected): on edge (V1, V2) with d1 != d2, a node for every m with m·s strictly
 // between d1 and d2, at Q = V1 + t (V2 - V1), t = (m·s - d1) / (d2 - d1). Which levels lie
 // strictly between is read from the exact vertex classes (their keys), never from the rounded
-// d values. Returns the number of those levels within the window (their lowest in `first`),
-// or -1 when they are more than window.max_levels_per_edge (the edge is skipped).
+// d values. Returns the number of those levels the edge keeps (their lowest in `first`): all
+// of them within the window; when they are more than window.max_levels_per_edge, only those
+// of the facing window, and `trimmed` (if given) is set to the number of levels left out.
 inline long long interior_levels(long long key_a, long long key_b, const Level_window& window,
-                                 long long& first)
+                                 long long& first, long long* trimmed = nullptr)
 {
+  if (trimmed != nullptr)
+    *trimmed = 0;
   if (key_a == key_b || !keys_usable(key_a, key_b))
     return 0; // the common case first: no level strictly inside
   const long long a = key_band(key_a), b = key_band(key_b);
   // Levels m with min(a, b) < 2m < max(a, b).
   first = first_interior_level(a, b, window);
-  const long long last = (std::min)(band_level((std::max)(a, b) - 1), window.highest);
+  long long last = (std::min)(band_level((std::max)(a, b) - 1), window.highest);
   if (last < first)
     return 0;
-  if (std::size_t(last - first + 1) > window.max_levels_per_edge)
-    return -1;
-  return last - first + 1;
+  if (std::size_t(last - first) < window.max_levels_per_edge)
+    return last - first + 1;
+  const long long all = last - first + 1;
+  first = (std::max)(first, window.facing_lowest);
+  last = (std::min)(last, window.facing_highest);
+  const long long kept = last >= first ? last - first + 1 : 0;
+  if (trimmed != nullptr)
+    *trimmed = all - kept;
+  return kept;
 }
 
 // Per model face, bit j set when the face is the first, in face order, to have its edge j:
@@ -141,8 +170,8 @@ void find_active_faces(const Local_mesh<TriangleMesh>& lm,
   concatenate(parts, active);
 }
 
-// Calls f(face, j, count, first) for every edge j owned by the active faces [begin, end),
-// with its interior_levels().
+// Calls f(face, j, count, first, trimmed) for every edge j owned by the active faces
+// [begin, end) with interior levels, with its interior_levels().
 template <typename F>
 void for_each_owned_edge(const std::vector<Active_face>& active, const std::vector<long long>& keys,
                          std::size_t begin, std::size_t end, const Level_window& window, F&& f)
@@ -154,13 +183,60 @@ void for_each_owned_edge(const std::vector<Active_face>& active, const std::vect
     for (int j = 0; j < 3; ++j) {
       if (!(face.owned & (1u << j)))
         continue;
-      long long first = 0;
+      long long first = 0, trimmed = 0;
       const long long count = interior_levels(
           keys[std::size_t(face.vertices[std::size_t(j)])],
-          keys[std::size_t(face.vertices[std::size_t((j + 1) % 3)])], window, first);
-      if (count != 0)
-        f(face, j, count, first);
+          keys[std::size_t(face.vertices[std::size_t((j + 1) % 3)])], window, first, &trimmed);
+      if (count != 0 || trimmed != 0)
+        f(face, j, count, first, trimmed);
     }
+  }
+}
+
+// The facing window of a sweep (see Level_window): from floor(d/s) of the lowest to
+// floor(d/s) + 1 of the highest d value of the vertices facing the light plane within the
+// incidence limit (Z·Ñ >= facing_window_cosine |Ñ|), read from their exact classes; empty if there
+// is none. Only needed, and only computed, when an edge can cross more than max_levels_per_edge
+// levels.
+template <typename ConcurrencyTag>
+void set_facing_window(const Vertex_normals& vn, const std::array<double, 3>& z,
+                       const std::vector<long long>& keys, Level_window& window)
+{
+  window.facing_lowest = 1;
+  window.facing_highest = 0;
+  if (!window.keep_facing_levels || !window.may_trim())
+    return;
+  const std::size_t nv = keys.size();
+  const Chunks chunks = chunks_for<ConcurrencyTag>(nv, std::size_t(1) << 15);
+  const long long none_low = (std::numeric_limits<long long>::max)(),
+                  none_high = (std::numeric_limits<long long>::min)();
+  std::vector<std::array<long long, 2>> parts(chunks.size(), {none_low, none_high});
+  for_each_chunk<ConcurrencyTag>(chunks, [&](std::size_t c, std::size_t b, std::size_t e) {
+    long long low = none_low, high = none_high;
+    for (std::size_t v = b; v < e; ++v) {
+      const long long key = keys[v];
+      if (key == undefined_key || key > key_side_offset / 2)
+        continue; // undefined, or the normal points away from the light plane
+      const double* n = &vn.normal[3 * v];
+      const double zn = z[0] * n[0] + z[1] * n[1] + z[2] * n[2];
+      if (!(zn * zn >= facing_window_cosine * facing_window_cosine *
+                           (n[0] * n[0] + n[1] * n[1] + n[2] * n[2])) ||
+          !(zn > 0))
+        continue;
+      const long long level = band_level(key);
+      low = (std::min)(low, level);
+      high = (std::max)(high, level + 1);
+    }
+    parts[c] = {low, high};
+  });
+  long long low = none_low, high = none_high;
+  for (const auto& part : parts) {
+    low = (std::min)(low, part[0]);
+    high = (std::max)(high, part[1]);
+  }
+  if (low <= high) {
+    window.facing_lowest = low;
+    window.facing_highest = high;
   }
 }
 
@@ -183,26 +259,29 @@ void compute_highlight_nodes(const Local_mesh<TriangleMesh>& lm,
   // 1. Count the nodes of the edges owned by the active faces, per chunk.
   const std::vector<Active_face>& active = out.active_faces;
   const Chunks chunks = chunks_for<ConcurrencyTag>(active.size(), std::size_t(1) << 12);
-  std::vector<std::size_t> chunk_nodes(chunks.size(), 0), chunk_capped(chunks.size(), 0);
+  std::vector<std::size_t> chunk_nodes(chunks.size(), 0), chunk_capped(chunks.size(), 0),
+      chunk_trimmed(chunks.size(), 0);
   for_each_chunk<ConcurrencyTag>(chunks, [&](std::size_t c, std::size_t b, std::size_t e) {
-    std::size_t nodes = 0, capped = 0;
-    for_each_owned_edge(active, keys, b, e, window,
-                        [&](const Active_face&, int, long long count, long long) {
-                          if (count < 0)
-                            ++capped;
-                          else
-                            nodes += std::size_t(count);
-                        });
+    std::size_t nodes = 0, capped = 0, trimmed_nodes = 0;
+    for_each_owned_edge(
+        active, keys, b, e, window,
+        [&](const Active_face&, int, long long count, long long, long long trimmed) {
+          nodes += std::size_t(count);
+          capped += trimmed != 0;
+          trimmed_nodes += std::size_t(trimmed);
+        });
     chunk_nodes[c] = nodes;
     chunk_capped[c] = capped;
+    chunk_trimmed[c] = trimmed_nodes;
   });
 
   // 2. Node ids: edge nodes by edge, then vertex nodes.
   std::vector<std::size_t> chunk_offset(chunks.size() + 1, 0);
-  out.number_of_capped_edges = 0;
+  out.number_of_capped_edges = out.number_of_trimmed_nodes = 0;
   for (std::size_t c = 0; c < chunks.size(); ++c) {
     chunk_offset[c + 1] = chunk_offset[c] + chunk_nodes[c];
     out.number_of_capped_edges += chunk_capped[c];
+    out.number_of_trimmed_nodes += chunk_trimmed[c];
   }
   std::size_t vertex_nodes = 0;
   for (int v : on_level_vertices)
@@ -219,8 +298,8 @@ void compute_highlight_nodes(const Local_mesh<TriangleMesh>& lm,
     int next_id = int(chunk_offset[c]);
     for_each_owned_edge(
         active, keys, b, e, window,
-        [&](const Active_face& face, int j, long long count, long long first) {
-          if (count < 0)
+        [&](const Active_face& face, int j, long long count, long long first, long long) {
+          if (count == 0)
             return;
           const int edge = face.edges[std::size_t(j)];
           out.edge_first_node[std::size_t(edge)] = next_id;

@@ -23,7 +23,7 @@ struct Highlight_segments
 {
   std::vector<std::array<int, 2>> segments; // node ids
   std::size_t faces_across_poles = 0;       // faces where d is undefined or changes side
-  std::size_t faces_with_capped_edges = 0;
+  std::size_t faces_with_capped_edges = 0;  // faces joining only the levels of the facing window
 };
 
 // §2.4 and Fig. 2: inside each triangle, nodes of the same index on different edges are
@@ -80,22 +80,25 @@ void connect_highlight_nodes(const Local_mesh<TriangleMesh>& lm, const std::vect
         ++part.faces_across_poles;
         continue;
       }
-      long long first = 0;
-      if (interior_levels(k[0], k[1], window, first) < 0 ||
-          interior_levels(k[1], k[2], window, first) < 0 ||
-          interior_levels(k[2], k[0], window, first) < 0) {
-        ++part.faces_with_capped_edges;
-        continue;
-      }
+      // The first level kept on each face edge; a face with an edge whose levels beyond the
+      // facing window were trimmed joins only the levels of the facing window.
+      long long first[3] = {0, 0, 0}, trimmed[3] = {0, 0, 0};
+      for (int j = 0; j < 3; ++j)
+        interior_levels(k[j], k[(j + 1) % 3], window, first[j], &trimmed[j]);
+      const bool trimmed_face = (trimmed[0] | trimmed[1] | trimmed[2]) != 0;
+      part.faces_with_capped_edges += trimmed_face;
       const long long band[3] = {key_band(k[0]), key_band(k[1]), key_band(k[2])};
-      const long long lowest =
+      long long lowest =
           (std::max)(band_level(std::min({band[0], band[1], band[2]})), window.lowest);
-      const long long highest =
+      long long highest =
           (std::min)(band_level(std::max({band[0], band[1], band[2]})), window.highest);
+      if (trimmed_face) {
+        lowest = (std::max)(lowest, window.facing_lowest);
+        highest = (std::min)(highest, window.facing_highest);
+      }
       // Face edge j joins corners j and j + 1.
       auto node_on_face_edge = [&](int j, long long m) {
-        return hn.edge_first_node[std::size_t(face.edges[std::size_t(j)])] +
-               int(m - first_interior_level(band[j], band[(j + 1) % 3], window));
+        return hn.edge_first_node[std::size_t(face.edges[std::size_t(j)])] + int(m - first[j]);
       };
       for (long long m = lowest; m <= highest; ++m) {
         const int r[3] = {compare_band_to_level(band[0], m), compare_band_to_level(band[1], m),

@@ -1,0 +1,121 @@
+// The highlight distance as a PLY vertex property (issue 18), as the example programs write it
+// (examples/Highlight_lines/include/mesh_io.h, highlight_lines --mesh-out FILE.ply): written,
+// read back with CGAL's PLY reader, the values are the library's, they are eq. 1 evaluated
+// independently, and their linear interpolation along each edge equals m·s at the model's
+// nodes, so that a viewer's contour filter at m·s draws the highlight lines.
+#include "test_meshes.h"
+
+#include "mesh_io.h"
+
+#include <CGAL/Highlight_lines/Highlight_line_sweeper.h>
+#include <CGAL/Highlight_lines/default_light_setup.h>
+#include <CGAL/compute_highlight_lines.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace test;
+namespace HL = CGAL::Highlight_lines;
+namespace HLP = CGAL::Highlight_lines::parameters;
+
+// d of eq. 1 at vertex v, with the area-weighted normal of eq. 3, computed here.
+double ply_test_eq1_distance(const Surface_mesh& mesh, Surface_mesh::Vertex_index v,
+                             const Lights& lights)
+{
+  Vector n(0, 0, 0);
+  for (auto f : CGAL::faces_around_target(mesh.halfedge(v), mesh)) {
+    if (f == Surface_mesh::null_face())
+      continue;
+    const auto h = mesh.halfedge(f);
+    const Point a = mesh.point(mesh.source(h)), b = mesh.point(mesh.target(h)),
+                c = mesh.point(mesh.target(mesh.next(h)));
+    n = n + CGAL::cross_product(b - a, c - a);
+  }
+  const Vector w = mesh.point(v) - lights.base_point();
+  return CGAL::to_double(CGAL::cross_product(w, lights.light_direction()) * n) /
+         CGAL::to_double(lights.plane_normal() * n);
+}
+
+bool ply_test_same(double a, double b)
+{
+  return (std::isnan(a) && std::isnan(b)) || a == b;
+}
+
+TEST(HighlightDistancePly, WrittenReadBackAndContouredAtTheNodes)
+{
+  for (const std::string name : {"spot.off", "beetle.off"}) {
+    Surface_mesh mesh;
+    ASSERT_TRUE(CGAL::IO::read_polygon_mesh(shared_data(name), mesh)) << name;
+    const Lights lights = HL::default_light_setup(mesh, HLP::number_of_lines(40));
+    const std::string path = ::testing::TempDir() + "highlight_distance_" + name + ".ply";
+    ASSERT_TRUE(mesh_io::write_ply_with_highlight_distances(path, mesh, lights, true)) << name;
+
+    Surface_mesh back;
+    std::ifstream in(path, std::ios::binary);
+    ASSERT_TRUE(CGAL::IO::read_PLY(in, back)) << name;
+    ASSERT_EQ(num_vertices(back), num_vertices(mesh)) << name;
+    ASSERT_EQ(num_faces(back), num_faces(mesh)) << name;
+    auto [distance, has_distance] = back.property_map<Surface_mesh::Vertex_index, double>(
+        mesh_io::highlight_distance_property());
+    auto [level, has_level] =
+        back.property_map<Surface_mesh::Vertex_index, double>(mesh_io::highlight_level_property());
+    ASSERT_TRUE(has_distance && has_level) << name;
+
+    // The library's values, read back bit for bit; NaN exactly on the vertices turned away.
+    std::vector<double> library(num_vertices(mesh), 0.0);
+    const HL::Highlight_line_sweeper<Surface_mesh> sweeper(mesh);
+    sweeper.highlight_distances(lights,
+                                CGAL::make_property_map(library), // indexed by the vertex index
+                                HLP::facing_side_only(true));
+    const double s = CGAL::to_double(lights.spacing());
+    std::size_t defined = 0, checked_eq1 = 0;
+    for (auto v : vertices(mesh)) {
+      const double d = distance[v];
+      ASSERT_TRUE(ply_test_same(d, library[std::size_t(v)])) << name << ": vertex " << v;
+      ASSERT_TRUE(ply_test_same(level[v], d / s)) << name << ": vertex " << v;
+      ASSERT_EQ(back.point(v), mesh.point(v)) << name << ": vertex " << v;
+      if (std::isnan(d))
+        continue;
+      ++defined;
+      // Eq. 1 evaluated independently (double normals: agreement to rounding).
+      const double eq1 = ply_test_eq1_distance(mesh, v, lights);
+      ASSERT_NEAR(d, eq1, 1e-9 * (std::abs(eq1) + s)) << name << ": vertex " << v;
+      ++checked_eq1;
+    }
+    EXPECT_GT(defined, num_vertices(mesh) / 4) << name;
+    EXPECT_LT(defined, num_vertices(mesh)) << name << ": the vertices turned away are NaN";
+    EXPECT_EQ(checked_eq1, defined) << name;
+
+    // The contour at m·s of the values read back passes through every node of the model.
+    const auto model = CGAL::compute_highlight_lines(
+        mesh, lights, CGAL::Emptyset_iterator(),
+        HLP::combine(HLP::facing_side_only(true),
+                     HLP::level_range(HL::default_level_range(mesh, lights))));
+    ASSERT_GT(model.nodes().size(), 100u) << name;
+    for (const auto& node : model.nodes()) {
+      const double target = double(node.level) * s;
+      if (node.is_on_vertex()) {
+        EXPECT_EQ(distance[node.vertex], target) << name;
+        continue;
+      }
+      const double d1 = distance[back.source(node.halfedge)],
+                   d2 = distance[back.target(node.halfedge)];
+      ASSERT_FALSE(std::isnan(d1) || std::isnan(d2)) << name;
+      // The contour filter's crossing: where the linear interpolant equals m·s.
+      const double t = (target - d1) / (d2 - d1);
+      EXPECT_NEAR(t, node.parameter, 1e-9) << name << ": level " << node.level;
+      EXPECT_NEAR(d1 + node.parameter * (d2 - d1), target, 1e-9 * (std::abs(d1) + std::abs(d2)))
+          << name << ": level " << node.level;
+    }
+    std::remove(path.c_str());
+  }
+}
+
+} // namespace
