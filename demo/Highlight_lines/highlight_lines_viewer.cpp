@@ -57,6 +57,8 @@ const char* usage =
     "  pick X Y                   pick the face under pixel (X, Y) (from the top left)\n"
     "  pick_face ID               pick face ID (at its centroid)\n"
     "  grow RADIUS                the region: faces around the picked point within RADIUS\n"
+    "  dent [DEPTH]               press a dent (depth in diagonals, default 0.006) at the picked\n"
+    "                             point, 0.6 times the region's radius wide (undoable)\n"
     "  detect                     find irregular regions (waits until done)\n"
     "  select_detected I          the region: detected region I (0: the likeliest defect)\n"
     "  fair [ITERATIONS]          fair the region (waits until done; default 50 iterations)\n"
@@ -188,6 +190,7 @@ struct Draw_arrays
   std::vector<float> positions, normals, stripes;
   std::vector<unsigned int> triangles, region_triangles;
   std::vector<std::vector<unsigned int>> detected_triangles;
+  std::vector<bool> detected_is_local; // a dent or a bump, not an elongated or extended region
   std::vector<std::vector<float>> lines, desired;
   std::vector<float> movable;
 
@@ -221,7 +224,10 @@ struct Draw_arrays
     for (Face f : s.region())
       face_corners(f, region_triangles);
     detected_triangles.clear();
+    detected_is_local.clear();
     for (const auto& found : s.detected()) {
+      detected_is_local.push_back(found.kind == HL::Irregularity_kind::DENT ||
+                                  found.kind == HL::Irregularity_kind::BUMP);
       detected_triangles.emplace_back();
       for (Face f : found.faces)
         face_corners(f, detected_triangles.back());
@@ -328,10 +334,10 @@ void draw_scene(const Session& session, const Draw_arrays& arrays, const Camera&
   glDepthMask(GL_FALSE);
   if (options.show_detected)
     for (std::size_t i = 0; i < arrays.detected_triangles.size(); ++i) {
-      if (i == 0)
-        glColor4f(0.9f, 0.3f, 0.2f, 0.45f);
+      if (arrays.detected_is_local[i])
+        glColor4f(0.9f, 0.25f, 0.15f, 0.5f);
       else
-        glColor4f(0.95f, 0.6f, 0.15f, 0.35f);
+        glColor4f(0.95f, 0.7f, 0.35f, 0.3f);
       glDrawElements(GL_TRIANGLES, GLsizei(arrays.detected_triangles[i].size()), GL_UNSIGNED_INT,
                      arrays.detected_triangles[i].data());
     }
@@ -353,13 +359,13 @@ void draw_scene(const Session& session, const Draw_arrays& arrays, const Camera&
       glColor3f(0.08f, 0.09f, 0.15f);
     draw_polylines(arrays.lines);
   }
-  glLineWidth(2.5f);
-  glColor3f(0.1f, 0.35f, 0.95f);
-  draw_polylines(arrays.desired);
-  glPointSize(4);
-  glColor3f(0.1f, 0.65f, 0.25f);
+  glPointSize(3);
+  glColor3f(0.1f, 0.6f, 0.25f);
   glVertexPointer(3, GL_FLOAT, 0, arrays.movable.data());
   glDrawArrays(GL_POINTS, 0, GLsizei(arrays.movable.size() / 3));
+  glLineWidth(3);
+  glColor3f(0.1f, 0.3f, 0.95f);
+  draw_polylines(arrays.desired);
   glDisable(GL_LINE_SMOOTH);
   glDisable(GL_BLEND);
   glDisableClientState(GL_VERTEX_ARRAY);
@@ -398,7 +404,7 @@ struct App
   double region_radius = 0;
   int fairing_iterations = 50;
   bool showing_before = false;
-  int panel_width = 310;
+  int panel_width = 330;
   int frames = 0;
   std::size_t reported_iterations = 0;
   std::string status;
@@ -479,6 +485,16 @@ struct App
         std::to_string(session.desired_lines().size()) + " desired lines" +
         (session.region_note().empty() ? "" : " (" + session.region_note() + ")"));
   }
+  // A dent at the picked point, of `depth` times the mesh's diagonal, over 0.6 times the
+  // region's radius; the region is grown again around it.
+  void press_dent(double depth)
+  {
+    if (!picked)
+      return;
+    session.press_dent(picked->second, 0.6 * region_radius, depth * session.box_diagonal());
+    grow();
+  }
+
   bool fair()
   {
     if (showing_before) {
@@ -633,6 +649,17 @@ struct App
         return false;
       }
       grow();
+      return true;
+    }
+    if (action == "dent") {
+      double depth = 0.006;
+      in >> depth;
+      if (!picked) {
+        say("dent: pick a point first");
+        return false;
+      }
+      press_dent(depth);
+      say("pressed a dent");
       return true;
     }
     if (action == "detect") {
@@ -814,10 +841,12 @@ struct App
 
   void panel()
   {
-    ImGui::SetNextWindowPos(ImVec2(6, 6), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(float(panel_width), 0), ImGuiCond_FirstUseEver);
-    ImGui::Begin("Highlight lines");
-    panel_width = int(ImGui::GetWindowWidth()) + 6;
+    // A side panel as high as the window; the view is centred in the rest.
+    ImGui::SetNextWindowPos(ImVec2(6, 6), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(float(panel_width - 6), float(camera.height - 12)),
+                             ImGuiCond_Always);
+    ImGui::Begin("Highlight lines", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
     ImGui::InputText("##path", path_field, sizeof path_field);
     ImGui::SameLine();
     if (ImGui::Button("Open"))
@@ -868,15 +897,20 @@ struct App
         region_radius = radius;
         grow();
       }
-      ImGui::Text("%zu faces, %zu movable vertices (green), %zu desired lines (blue)",
-                  session.region().size(), session.movable_vertices().size(),
-                  session.desired_lines().size());
+      ImGui::TextWrapped("%zu faces, %zu movable vertices (green), %zu desired lines (blue)",
+                         session.region().size(), session.movable_vertices().size(),
+                         session.desired_lines().size());
       if (!session.region_note().empty())
         ImGui::TextWrapped("%s", session.region_note().c_str());
       if (ImGui::Button("Clear region")) {
         session.clear_region();
         picked.reset();
       }
+      ImGui::SameLine();
+      ImGui::BeginDisabled(!picked || session.job_running());
+      if (ImGui::Button("Press a dent here"))
+        press_dent(0.006);
+      ImGui::EndDisabled();
     }
 
     if (ImGui::CollapsingHeader("Detection", ImGuiTreeNodeFlags_DefaultOpen)) {
@@ -887,7 +921,7 @@ struct App
       } else if (ImGui::Button("Detect irregular regions")) {
         session.start_detection();
       }
-      ImGui::Checkbox("show regions (red: likeliest)", &view.show_detected);
+      ImGui::Checkbox("show (red: dent, bump; tan: likely design)", &view.show_detected);
       const auto& found = session.detected();
       for (std::size_t i = 0; i < found.size(); ++i) {
         char label[160];
@@ -911,10 +945,11 @@ struct App
       const auto& iterations = session.fairing_iterations();
       if (!iterations.empty()) {
         const auto& last = iterations.back();
-        ImGui::Text("iteration %zu: F %.4g (fair %.4g, diff %.4g)", iterations.size(),
-                    last.target_value, last.fairness_energy, last.difference_energy);
-        ImGui::Text("step %.3g edge lengths, scale %.2f, %zu held back",
-                    last.relative_max_displacement, last.step_scale, last.restrained_vertices);
+        ImGui::TextWrapped("iteration %zu: F %.4g (q_fair %.4g, q_diff %.4g)", iterations.size(),
+                           last.target_value, last.fairness_energy, last.difference_energy);
+        ImGui::TextWrapped("step %.3g edge lengths, scale %.2f, %zu vertices held back",
+                           last.relative_max_displacement, last.step_scale,
+                           last.restrained_vertices);
         std::vector<float> values;
         for (const auto& it : iterations)
           values.push_back(float(it.target_value));

@@ -259,7 +259,7 @@ public:
   // reason in `error`, if it cannot be read or has no triangle the lights can image.
   bool load(const std::string& path, std::string& error)
   {
-    if (job_.running()) {
+    if (job_running()) {
       error = "a computation is running";
       return false;
     }
@@ -322,6 +322,7 @@ public:
       error = e.what();
       return false;
     }
+    update_region_decorations(); // the desired lines follow the lights
     return true;
   }
   // Sets the light direction H (projected into the light plane) as a turn of the reference's.
@@ -370,12 +371,14 @@ public:
   // Sweeps the lights over the whole mesh from all sides in the worker thread.
   void start_detection()
   {
-    if (job_.running())
+    if (job_running())
       return;
     job_kind_ = Job_kind::DETECTION;
     detection_fraction_ = 0;
     auto copy = std::make_shared<Mesh>(*mesh_);
-    const Lights lights = *reference_lights_;
+    // Denser lights than shown, as the example programs sweep them: a defect is found only
+    // where several lines cross it.
+    const Lights lights = HL::default_light_setup(*mesh_, HLP::number_of_lines(60));
     job_.start([this, copy, lights] {
       std::vector<HL::Highlight_line_irregularity<Mesh>> found;
       try {
@@ -400,7 +403,7 @@ public:
   // iteration as it comes (poll()).
   bool start_fairing(unsigned int iterations, std::string& error)
   {
-    if (job_.running()) {
+    if (job_running()) {
       error = "a computation is running";
       return false;
     }
@@ -443,9 +446,10 @@ public:
     });
     return true;
   }
-  bool job_running() const { return job_.running(); }
-  bool fairing_running() const { return job_.running() && job_kind_ == Job_kind::FAIRING; }
-  bool detection_running() const { return job_.running() && job_kind_ == Job_kind::DETECTION; }
+  // Until poll() has taken over the result: a script waits for that, not just for the worker.
+  bool job_running() const { return job_kind_ != Job_kind::NONE; }
+  bool fairing_running() const { return job_kind_ == Job_kind::FAIRING; }
+  bool detection_running() const { return job_kind_ == Job_kind::DETECTION; }
   // Cancels the running job: a cancelled fairing leaves the mesh as it was before it.
   void cancel() { job_.request_cancel(); }
   // Called once per frame by the window: takes over what the worker produced. Returns a message
@@ -507,8 +511,8 @@ public:
 
   // ---- Undo, redo, before / after ------------------------------------------------------------
 
-  bool can_undo() const { return history_index_ > 0 && !job_.running(); }
-  bool can_redo() const { return history_index_ + 1 < history_.size() && !job_.running(); }
+  bool can_undo() const { return history_index_ > 0 && !job_running(); }
+  bool can_redo() const { return history_index_ + 1 < history_.size() && !job_running(); }
   void undo()
   {
     if (can_undo())
@@ -522,9 +526,29 @@ public:
   // Shows the mesh before the latest change (true) or as it is (false).
   void show_before(bool before)
   {
-    if (history_index_ == 0 || job_.running())
+    if (history_index_ == 0 || job_running())
       return;
     set_positions(history_[before ? history_index_ - 1 : history_index_]);
+  }
+
+  // Presses a smooth dent (1 - (r/R)^2)^3 of the given depth into the surface around `center`,
+  // along the normals, as the example fair_with_highlight_lines does: something to find and
+  // fair on a clean mesh. Undoable.
+  void press_dent(const Point& center, double radius, double depth)
+  {
+    if (job_running() || !(radius > 0))
+      return;
+    std::vector<Point> moved = positions();
+    for (Vertex v : vertices(*mesh_)) {
+      const double r2 = CGAL::squared_distance(mesh_->point(v), center) / (radius * radius);
+      if (r2 >= 1)
+        continue;
+      const std::size_t i = std::size_t(v);
+      const Vector n(normals_[3 * i], normals_[3 * i + 1], normals_[3 * i + 2]);
+      moved[i] = mesh_->point(v) - depth * (1 - r2) * (1 - r2) * (1 - r2) * n;
+    }
+    set_positions(moved);
+    push_history();
   }
 
   // ---- Files ----------------------------------------------------------------------------------
