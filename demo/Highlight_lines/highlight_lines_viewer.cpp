@@ -65,7 +65,8 @@ const char* usage =
     "  undo, redo                 the mesh before / after the latest fairing\n"
     "  save PATH, save_lines PATH, save_region PATH, save_lights PATH, screenshot PATH.png\n"
     "  quit\n"
-    "A failing action stops the script with exit status 1.\n";
+    "At the end of the script the window stays open for the user (unless it quits); a failing\n"
+    "action closes it with exit status 1.\n";
 
 // ---- Camera -----------------------------------------------------------------------------------
 
@@ -712,8 +713,9 @@ struct App
     if (!scripted || script_failed || session.job_running() || !pending_screenshot.empty() ||
         frames < 3)
       return;
-    if (script.empty()) {
-      glfwSetWindowShouldClose(window, GLFW_TRUE);
+    if (script.empty()) { // the user takes over
+      scripted = false;
+      say("script done");
       return;
     }
     const auto [number, line] = script.front();
