@@ -456,6 +456,9 @@ struct App
       say("lights: " + error);
       return false;
     }
+    if (scripted) // the time of each step of a scripted sweep, on the terminal
+      std::printf("lights: %zu lines, updated in %.2f ms\n", session.number_of_lines(),
+                  session.update_milliseconds());
     return true;
   }
 
@@ -885,7 +888,8 @@ struct App
       }
       ImGui::Text("%zu lines (lights %lld to %lld)", session.number_of_lines(),
                   session.levels().first, session.levels().second);
-      ImGui::Text("updated in %.2f ms", session.update_milliseconds());
+      ImGui::Text("updated in %.2f ms; frame %.1f ms", session.update_milliseconds(),
+                  1000.0 / std::max(ImGui::GetIO().Framerate, 1e-3f));
       ImGui::Checkbox("zebra stripes", &view.zebra);
       ImGui::SameLine();
       ImGui::Checkbox("lines", &view.show_lines);

@@ -268,6 +268,15 @@ public:
       error = "cannot read a polygon mesh from " + path;
       return false;
     }
+    return set_mesh(std::move(mesh), path, error);
+  }
+  // Shows `mesh` (a triangle mesh without removed elements), as read from `path`.
+  bool set_mesh(Mesh&& mesh, const std::string& path, std::string& error)
+  {
+    if (job_running()) {
+      error = "a computation is running";
+      return false;
+    }
     try {
       Lights reference = HL::default_light_setup(mesh, HLP::number_of_lines(40));
       auto sweeper = std::make_unique<Sweeper>(mesh_storage(std::move(mesh)));
