@@ -420,7 +420,8 @@ struct App
 
   // Mouse state.
   double last_x = 0, last_y = 0;
-  bool dragging = false;
+  int dragged_button = -1; // the button held since a press on the view, or -1
+  bool pick_requested = false;
   double scroll = 0;
   std::vector<std::string> dropped;
 
@@ -732,6 +733,22 @@ struct App
 
   // ---- Mouse and keys -------------------------------------------------------------------------
 
+  // Button presses come as events: a click can start and end between two frames, where the
+  // buttons' state would miss it.
+  void on_mouse_button(int button, int action, int mods)
+  {
+    if (action == GLFW_RELEASE) {
+      dragged_button = -1;
+      return;
+    }
+    if (ImGui::GetIO().WantCaptureMouse || !session.has_mesh())
+      return;
+    if (button == GLFW_MOUSE_BUTTON_LEFT && (mods & GLFW_MOD_SHIFT))
+      pick_requested = true;
+    else
+      dragged_button = button;
+  }
+
   void handle_mouse()
   {
     ImGuiIO& io = ImGui::GetIO();
@@ -746,21 +763,11 @@ struct App
     const double dx = x - last_x, dy = y - last_y;
     last_x = x;
     last_y = y;
-    const bool left = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-    const bool right = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS ||
-                       glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
-    if (!left && !right)
-      dragging = false;
-    else if (!dragging && !io.WantCaptureMouse) {
-      dragging = true;
-      const bool shift = glfwGetKey(window, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ||
-                         glfwGetKey(window, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
-      if (left && shift && session.has_mesh() && !session.job_running()) {
-        pick(camera.ray_through(x, y));
-        dragging = false; // a click, not a drag
-        return;
-      }
-    }
+    if (pick_requested && !session.job_running())
+      pick(camera.ray_through(x, y));
+    pick_requested = false;
+    const bool dragging = dragged_button >= 0;
+    const bool left = dragged_button == GLFW_MOUSE_BUTTON_LEFT;
     if (scroll != 0 && !io.WantCaptureMouse)
       camera.zoom = std::clamp(camera.zoom * std::pow(1.15, scroll), 0.05, 100.0);
     scroll = 0;
@@ -1108,6 +1115,10 @@ int main(int argc, char** argv)
     app.window = window;
     // Set before ImGui's, which then forward to them.
     glfwSetScrollCallback(window, [](GLFWwindow*, double, double y) { the_app->scroll += y; });
+    glfwSetMouseButtonCallback(window, [](GLFWwindow*, int button, int action, int mods) {
+      if (!the_app->scripted)
+        the_app->on_mouse_button(button, action, mods);
+    });
     glfwSetKeyCallback(window, [](GLFWwindow*, int key, int, int action, int mods) {
       if (!the_app->scripted)
         the_app->on_key(key, action, mods);
