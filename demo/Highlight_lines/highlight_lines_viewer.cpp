@@ -208,7 +208,8 @@ struct Draw_arrays
     for (Vertex v : vertices(mesh)) {
       const Point& p = mesh.point(v);
       positions.insert(positions.end(), {float(p.x()), float(p.y()), float(p.z())});
-      const double d = s.distances()[std::size_t(v)];
+      const std::size_t i = std::size_t(v);
+      const double d = i < s.distances().size() ? s.distances()[i] : 0.0;
       // A line (d = m s) runs in the middle of a dark stripe: dark where frac(d/s + 1/4) < 1/2.
       stripes.push_back(std::isfinite(d) ? float(std::fmod(d / spacing + 0.25, 64.0)) : 0.75f);
     }
@@ -1044,6 +1045,7 @@ struct App
     panel();
     ImGui::Render();
 
+    session.show_distance_field(view.zebra); // computed only while the zebra is shown
     if (session.has_mesh())
       arrays.update(session);
     draw_scene(session, arrays, camera, view, stripe_texture);

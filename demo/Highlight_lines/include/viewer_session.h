@@ -358,7 +358,18 @@ public:
   // The highlight distance value d (eq. 1) of each vertex, for the zebra shading; NaN where the
   // normal is parallel to the light plane or, the lines being those of the facing side only,
   // turned away from it.
+  // Empty unless asked for with show_distance_field(true).
   const std::vector<double>& distances() const { return distances_; }
+  void show_distance_field(bool shown)
+  {
+    if (shown == distance_field_wanted_)
+      return;
+    distance_field_wanted_ = shown;
+    if (shown && has_mesh()) {
+      update_distances();
+      ++revision_;
+    }
+  }
 
   // ---- The region -----------------------------------------------------------------------------
 
@@ -642,49 +653,66 @@ private:
     }
   }
 
-  // New lights or a moved mesh: the distance field (the zebra, and the lights that fall on the
-  // surface), then the lines through the sweeper (its normals are cached; after set_positions()
-  // they were updated once).
+  // New lights or a moved mesh: the lights that fall on the surface, the lines through the
+  // sweeper (its normals are cached; after set_positions() they were updated once) and, if the
+  // zebra is shown, the distance field.
   void update_lines()
   {
     const auto start = std::chrono::steady_clock::now();
     lights_ = controls_.applied_to(*reference_lights_);
-    update_distances();
     levels_ = visible_levels();
     const auto model = sweeper_->compute(
         *lights_, HLP::combine(HLP::level_range(levels_), HLP::facing_side_only(true)));
     lines_.clear();
     model.polylines(std::back_inserter(lines_));
+    if (distance_field_wanted_)
+      update_distances();
+    else
+      distances_.clear();
     update_milliseconds_ =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     ++revision_;
   }
 
-  // d = ((P - A0) x H)·N / (Z·N) (eq. 1), on the side facing the lights.
+  // d = ((P - A0) x H)·N / (Z·N) (eq. 1) of vertex i, on the side facing the lights; NaN elsewhere.
+  double distance(std::size_t i) const
+  {
+    const std::array<double, 3>& a = lights_->base_point_array();
+    const std::array<double, 3>& h = lights_->light_direction_array();
+    const std::array<double, 3>& z = lights_->plane_normal_array();
+    const double* n = &normals_[3 * i];
+    const double zn = z[0] * n[0] + z[1] * n[1] + z[2] * n[2];
+    if (!(zn > 1e-12))
+      return std::numeric_limits<double>::quiet_NaN();
+    const Point& p = mesh_->point(Vertex(Mesh::size_type(i)));
+    const double w[3] = {p.x() - a[0], p.y() - a[1], p.z() - a[2]};
+    const double wxh[3] = {w[1] * h[2] - w[2] * h[1], w[2] * h[0] - w[0] * h[2],
+                           w[0] * h[1] - w[1] * h[0]};
+    return (wxh[0] * n[0] + wxh[1] * n[1] + wxh[2] * n[2]) / zn;
+  }
+
   void update_distances()
   {
-    const Vector h = lights_->light_direction(), z = lights_->plane_normal();
-    const Point a0 = lights_->base_point();
     distances_.resize(num_vertices(*mesh_));
-    for (Vertex v : vertices(*mesh_)) {
-      const std::size_t i = std::size_t(v);
-      const Vector n(normals_[3 * i], normals_[3 * i + 1], normals_[3 * i + 2]);
-      const double zn = z * n;
-      distances_[i] = zn > 1e-12 ? (CGAL::cross_product(mesh_->point(v) - a0, h) * n) / zn
-                                 : std::numeric_limits<double>::quiet_NaN();
-    }
+    for (std::size_t i = 0; i < distances_.size(); ++i)
+      distances_[i] = distance(i);
   }
 
   // The lights whose lines a light tunnel shows: those between the 5 % and 95 % quantiles of d (as
-  // default_level_range() takes them). All lights would also image the lights far out in the plane
-  // on the surface parts almost parallel to it, thousands of short lines bunched at the silhouettes
-  // (as does a real reflection, but they hide the surface and cost most of the time).
+  // default_level_range() takes them), estimated on at most 2^16 vertices spread over the mesh.
+  // All lights would also image the lights far out in the plane on the surface parts almost
+  // parallel to it, thousands of short lines bunched at the silhouettes (as does a real
+  // reflection, but they hide the surface and cost most of the time).
   std::pair<long long, long long> visible_levels() const
   {
+    const std::size_t n = num_vertices(*mesh_);
+    const std::size_t stride = (std::max)(n >> 16, std::size_t(1));
     std::vector<double> finite;
-    for (double d : distances_)
+    for (std::size_t i = 0; i < n; i += stride) {
+      const double d = distance(i);
       if (std::isfinite(d))
         finite.push_back(d);
+    }
     if (finite.empty())
       return {0, 0};
     const auto quantile = [&](double q) {
@@ -720,6 +748,7 @@ private:
   std::array<double, 3> box_center_{};
   double box_diagonal_ = 1;
   std::vector<double> normals_, distances_;
+  bool distance_field_wanted_ = false;
 
   std::optional<Lights> reference_lights_, lights_;
   Light_controls controls_;
