@@ -62,7 +62,8 @@ const char* usage =
     "  detect                     find irregular regions (waits until done)\n"
     "  select_detected I          the region: detected region I (0: the likeliest defect)\n"
     "  fair [ITERATIONS]          fair the region (waits until done; default 50 iterations)\n"
-    "  undo, redo                 the mesh before / after the latest fairing\n"
+    "  undo, redo                 the mesh before / after the latest fairing (or dent)\n"
+    "  before on|off              show the mesh before the latest change / as it is\n"
     "  save PATH, save_lines PATH, save_region PATH, save_lights PATH, screenshot PATH.png\n"
     "  quit\n"
     "At the end of the script the window stays open for the user (unless it quits); a failing\n"
@@ -688,6 +689,17 @@ struct App
       in >> iterations;
       fairing_iterations = int(iterations);
       return fair();
+    }
+    if (action == "before") {
+      std::string on;
+      in >> on;
+      if ((on != "on" && on != "off") || (on == "on" && !session.can_undo())) {
+        say("before: on (with something to compare) or off");
+        return false;
+      }
+      showing_before = on == "on";
+      session.show_before(showing_before);
+      return true;
     }
     if (action == "undo" || action == "redo") {
       const bool can = action == "undo" ? session.can_undo() : session.can_redo();

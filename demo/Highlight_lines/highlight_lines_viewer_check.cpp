@@ -7,7 +7,8 @@
 //   - the region is the face CGAL's AABB tree finds first along the viewer's picking ray, grown
 //     across edges to the faces whose corners lie within the radius of the hit point;
 //   - the faired mesh is fair_with_highlight_lines() of that region with the saved lights and
-//     iteration bound; undo gives back the mesh as read, redo the faired one.
+//     iteration bound; the before / after comparison shows both, undo gives back the mesh as
+//     read, redo the faired one.
 //
 //   highlight_lines_viewer_check MESH DIR ITERATIONS RADIUS OX OY OZ DX DY DZ
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
@@ -343,6 +344,9 @@ int main(int argc, char** argv)
            "difference " +
                difference.str() + ")");
   }
+  expect(read_positions(dir + "/before.off") == original &&
+             read_positions(dir + "/after.off") == read_positions(dir + "/faired.off"),
+         "the before / after comparison shows the mesh as read and the faired one");
   expect(read_positions(dir + "/undone.off") == original, "undo gives back the mesh as read");
   expect(read_positions(dir + "/redone.off") == read_positions(dir + "/faired.off"),
          "redo gives back the faired mesh");
