@@ -17,6 +17,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -53,6 +54,7 @@ const char* usage =
     "  sweep STEPS DELTA          move the lights across by DELTA spacings, STEPS times, a frame\n"
     "                             each\n"
     "  camera AZIMUTH ELEVATION ZOOM  view direction in degrees, zoom (1: whole mesh)\n"
+    "  frames N                   draw N frames, print their mean time\n"
     "  zebra on|off, lines on|off the zebra stripes of the same distance field; the lines\n"
     "  pick X Y                   pick the face under pixel (X, Y) (from the top left)\n"
     "  pick_face ID               pick face ID (at its centroid)\n"
@@ -409,6 +411,8 @@ struct App
   bool showing_before = false;
   int panel_width = 330;
   int frames = 0;
+  int timed_frames = 0, timed_frame_count = 1; // the frames action
+  std::chrono::steady_clock::time_point timed_start;
   std::size_t reported_iterations = 0;
   std::string status;
   char path_field[1024] = "";
@@ -614,6 +618,14 @@ struct App
       }
       return true;
     }
+    if (action == "frames") { // draws N frames and reports their mean time
+      double count = 0;
+      if (!numbers({&count}) || count < 1)
+        return false;
+      timed_frames = timed_frame_count = int(count);
+      timed_start = std::chrono::steady_clock::now();
+      return true;
+    }
     if (action == "camera") {
       double a = 0, e = 0, zoom = 1;
       if (!numbers({&a, &e, &zoom}) || !(zoom > 0))
@@ -726,9 +738,15 @@ struct App
   // One action per frame; none while a computation runs (the script waits for it).
   void step_script()
   {
+    if (timed_frames > 0 && --timed_frames == 0) {
+      std::printf("frames: %.2f ms per frame\n", std::chrono::duration<double, std::milli>(
+                                                     std::chrono::steady_clock::now() - timed_start)
+                                                         .count() /
+                                                     timed_frame_count);
+    }
     // ImGui sizes its windows in the first frames: the script starts once the panel is drawn.
     if (!scripted || script_failed || session.job_running() || !pending_screenshot.empty() ||
-        frames < 3)
+        frames < 3 || timed_frames > 0)
       return;
     if (script.empty()) { // the user takes over
       scripted = false;
