@@ -110,7 +110,7 @@ struct Camera
   Vec3 up{0, 1, 0}, forward_axis{0, 0, 1}, side_axis{1, 0, 0};
   Vec3 target{0, 0, 0};
   double radius = 1; // of the mesh
-  double azimuth = 35, elevation = 30, zoom = 1.2;
+  double azimuth = 35, elevation = 30, zoom = 1;
   double field_of_view = 30; // vertical, degrees
   int width = 1, height = 1;
   // The target is drawn this many pixels right of the window's centre: in the middle of the
@@ -190,7 +190,7 @@ struct Camera
 // The session's geometry as flat float arrays for glDrawElements, rebuilt when it changes.
 struct Draw_arrays
 {
-  std::size_t revision = std::size_t(-1);
+  std::size_t revision = std::size_t(-1), mesh_generation = std::size_t(-1);
   std::vector<float> positions, normals, stripes;
   std::vector<unsigned int> triangles, region_triangles;
   std::vector<std::vector<unsigned int>> detected_triangles;
@@ -220,7 +220,8 @@ struct Draw_arrays
       for (Vertex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
         out.push_back((unsigned int)(v));
     };
-    if (triangles.size() != 3 * num_faces(mesh)) {
+    if (mesh_generation != s.mesh_generation()) {
+      mesh_generation = s.mesh_generation();
       triangles.clear();
       for (Face f : faces(mesh))
         face_corners(f, triangles);

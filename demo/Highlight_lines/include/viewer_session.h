@@ -287,6 +287,7 @@ public:
       return false;
     }
     path_ = path;
+    ++mesh_generation_;
     controls_ = Light_controls();
     controls_.spacing = CGAL::to_double(reference_lights_->spacing());
     region_.clear();
@@ -301,6 +302,8 @@ public:
   bool has_mesh() const { return bool(sweeper_); }
   // Changes whenever something drawn changes (lines, positions, region, detected regions).
   std::size_t revision() const { return revision_; }
+  // Changes with each mesh shown (its triangles, not only its positions).
+  std::size_t mesh_generation() const { return mesh_generation_; }
   const Mesh& mesh() const { return *mesh_; }
   const std::string& path() const { return path_; }
   const std::array<double, 3>& box_center() const { return box_center_; }
@@ -741,7 +744,7 @@ private:
     }
   }
 
-  std::size_t revision_ = 0;
+  std::size_t revision_ = 0, mesh_generation_ = 0;
   std::unique_ptr<Mesh> mesh_;
   std::unique_ptr<Sweeper> sweeper_;
   std::string path_;
