@@ -6,6 +6,11 @@
 // measured once per run); `nodes` = size of the output. Argument 0: the example program's
 // light tunnel; 1: every level. With TBB, the model and the sweep are also measured with
 // CGAL::Parallel_if_available_tag.
+//
+// BM_viewer_light_change: the viewer's (demo/Highlight_lines) time from a change of the lights to
+// the new lines ready for drawing: the highlight distance field (zebra), the lights that fall on
+// the surface, the lines through its Parallel_if_available sweeper, as polylines. The copy to
+// OpenGL's arrays is not included (it needs a window).
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Highlight_lines/Highlight_line_sweeper.h>
 #include <CGAL/Highlight_lines/default_light_setup.h>
@@ -14,6 +19,8 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/compute_highlight_lines.h>
+
+#include "viewer_session.h"
 
 #include <benchmark/benchmark.h>
 
@@ -141,7 +148,29 @@ void BM_sweep_update(benchmark::State& state)
   report(state, total / double(state.iterations()));
 }
 
+void BM_viewer_light_change(benchmark::State& state)
+{
+  viewer::Session session;
+  std::string error;
+  if (!session.set_mesh(Mesh(big_mesh()), "beetle, Loop-subdivided 3 times", error)) {
+    state.SkipWithError(error.c_str());
+    return;
+  }
+  viewer::Light_controls controls = session.light_controls();
+  double total = 0;
+  for (auto _ : state) {
+    controls.offset += 0.1; // a tenth of the spacing across, as an arrow key moves them
+    const auto start = std::chrono::steady_clock::now();
+    session.set_light_controls(controls, error);
+    total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    benchmark::DoNotOptimize(session.lines().data());
+  }
+  state.counters["lines"] = double(session.number_of_lines());
+  report(state, total / double(state.iterations()));
+}
+
 BENCHMARK(BM_compute_vertex_normals)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_viewer_light_change)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_TEMPLATE(BM_compute_highlight_lines, CGAL::Sequential_tag)
     ->Arg(0)
     ->Arg(1)
