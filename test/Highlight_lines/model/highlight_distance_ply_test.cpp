@@ -29,15 +29,7 @@ namespace HLP = CGAL::Highlight_lines::parameters;
 double ply_test_eq1_distance(const Surface_mesh& mesh, Surface_mesh::Vertex_index v,
                              const Lights& lights)
 {
-  Vector n(0, 0, 0);
-  for (auto f : CGAL::faces_around_target(mesh.halfedge(v), mesh)) {
-    if (f == Surface_mesh::null_face())
-      continue;
-    const auto h = mesh.halfedge(f);
-    const Point a = mesh.point(mesh.source(h)), b = mesh.point(mesh.target(h)),
-                c = mesh.point(mesh.target(mesh.next(h)));
-    n = n + CGAL::cross_product(b - a, c - a);
-  }
+  const Vector n = area_weighted_normal(mesh, v);
   const Vector w = mesh.point(v) - lights.base_point();
   return CGAL::to_double(CGAL::cross_product(w, lights.light_direction()) * n) /
          CGAL::to_double(lights.plane_normal() * n);

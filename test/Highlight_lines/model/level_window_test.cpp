@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <set>
 #include <string>
 #include <tuple>
@@ -37,18 +38,8 @@ std::vector<bool> window_test_facing(const Surface_mesh& mesh, const Lights& lig
 {
   std::vector<bool> facing(num_vertices(mesh), false);
   const Vector z = lights.plane_normal();
-  for (auto v : vertices(mesh)) {
-    Vector n(0, 0, 0);
-    for (auto f : CGAL::faces_around_target(mesh.halfedge(v), mesh)) {
-      if (f == Surface_mesh::null_face())
-        continue;
-      const auto h = mesh.halfedge(f);
-      const Point a = mesh.point(mesh.source(h)), b = mesh.point(mesh.target(h)),
-                  c = mesh.point(mesh.target(mesh.next(h)));
-      n = n + CGAL::cross_product(b - a, c - a);
-    }
-    facing[std::size_t(v)] = z * n > 0;
-  }
+  for (auto v : vertices(mesh))
+    facing[std::size_t(v)] = z * area_weighted_normal(mesh, v) > 0;
   return facing;
 }
 
@@ -172,6 +163,24 @@ TEST(LevelWindow, TheCapOnlyTrimsBeyondTheFacingLights)
   EXPECT_EQ(missing, 0u);
   EXPECT_LT(capped.nodes().size(), default_cap.nodes().size());
   expect_nodes_are_the_nodes_of_the_lines(capped, "spot, cap 16");
+}
+
+// A spacing tiny against the mesh (found by the fuzzer): edges then cross more levels than
+// the cap even inside the facing window. They are skipped whole, with their faces, as without
+// the facing window, instead of the model growing past 2^31 nodes (std::length_error).
+TEST(LevelWindow, EdgesOverTheCapInsideTheFacingWindowAreSkipped)
+{
+  const Surface_mesh mesh = window_test_mesh("bunny.off");
+  const Lights usual = HL::default_light_setup(mesh, HLP::number_of_lines(40));
+  const Lights dense(usual.base_point(), usual.light_direction(), usual.plane_normal(),
+                     usual.spacing() * 1e-9);
+  const HL::Highlight_line_sweeper<Surface_mesh> sweeper(mesh);
+  const std::size_t cap = 64;
+  std::optional<Window_model> model;
+  ASSERT_NO_THROW(model.emplace(sweeper.compute(dense, HLP::max_levels_per_edge(cap))));
+  EXPECT_GT(model->number_of_skipped_edges(), num_edges(mesh) / 2);
+  EXPECT_LE(model->nodes().size(), cap * num_edges(mesh));
+  expect_nodes_are_the_nodes_of_the_lines(*model, "bunny, spacing 1e-9 of the usual");
 }
 
 } // namespace

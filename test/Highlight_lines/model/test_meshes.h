@@ -150,6 +150,22 @@ std::vector<std::pair<std::size_t, std::size_t>> segments_of(const Model& model)
   return result;
 }
 
+// The normal of eq. 3 at vertex v, computed here independently of the library: the sum of the
+// cross products of its faces (area-weighted, not normalised).
+inline Vector area_weighted_normal(const Surface_mesh& mesh, Surface_mesh::Vertex_index v)
+{
+  Vector n(0, 0, 0);
+  for (auto f : CGAL::faces_around_target(mesh.halfedge(v), mesh)) {
+    if (f == Surface_mesh::null_face())
+      continue;
+    const auto h = mesh.halfedge(f);
+    const Point a = mesh.point(mesh.source(h)), b = mesh.point(mesh.target(h)),
+                c = mesh.point(mesh.target(mesh.next(h)));
+    n = n + CGAL::cross_product(b - a, c - a);
+  }
+  return n;
+}
+
 inline std::string shared_data(const std::string& name)
 {
   return std::string(HIGHLIGHT_LINES_SHARED_DATA_DIR) + "/" + name;

@@ -101,7 +101,8 @@ inline long long first_interior_level(long long band_a, long long band_b,
 // strictly between is read from the exact vertex classes (their keys), never from the rounded
 // d values. Returns the number of those levels the edge keeps (their lowest in `first`): all
 // of them within the window; when they are more than window.max_levels_per_edge, only those
-// of the facing window, and `trimmed` (if given) is set to the number of levels left out.
+// of the facing window, and `trimmed` (if given) is set to the number of levels left out; -1
+// (and all of them trimmed) when those are still more than max_levels_per_edge.
 inline long long interior_levels(long long key_a, long long key_b, const Level_window& window,
                                  long long& first, long long* trimmed = nullptr)
 {
@@ -121,6 +122,14 @@ inline long long interior_levels(long long key_a, long long key_b, const Level_w
   first = (std::max)(first, window.facing_lowest);
   last = (std::min)(last, window.facing_highest);
   const long long kept = last >= first ? last - first + 1 : 0;
+  // Still over the cap inside the facing window (a spacing tiny against the mesh, an edge
+  // almost parallel to the light plane): the edge is skipped whole and its faces join no
+  // level, as without the facing window; otherwise the model could grow without bound.
+  if (std::size_t(kept) > window.max_levels_per_edge) {
+    if (trimmed != nullptr)
+      *trimmed = all;
+    return -1;
+  }
   if (trimmed != nullptr)
     *trimmed = all - kept;
   return kept;
@@ -188,7 +197,7 @@ void for_each_owned_edge(const std::vector<Active_face>& active, const std::vect
           keys[std::size_t(face.vertices[std::size_t(j)])],
           keys[std::size_t(face.vertices[std::size_t((j + 1) % 3)])], window, first, &trimmed);
       if (count != 0 || trimmed != 0)
-        f(face, j, count, first, trimmed);
+        f(face, j, (std::max)(count, 0LL), first, trimmed); // a skipped edge has no node
     }
   }
 }

@@ -82,11 +82,15 @@ void connect_highlight_nodes(const Local_mesh<TriangleMesh>& lm, const std::vect
       }
       // The first level kept on each face edge; a face with an edge whose levels beyond the
       // facing window were trimmed joins only the levels of the facing window.
+      // A face with a skipped edge (over the cap even inside the facing window) joins none.
       long long first[3] = {0, 0, 0}, trimmed[3] = {0, 0, 0};
+      bool skipped_edge = false;
       for (int j = 0; j < 3; ++j)
-        interior_levels(k[j], k[(j + 1) % 3], window, first[j], &trimmed[j]);
+        skipped_edge |= interior_levels(k[j], k[(j + 1) % 3], window, first[j], &trimmed[j]) < 0;
       const bool trimmed_face = (trimmed[0] | trimmed[1] | trimmed[2]) != 0;
       part.faces_with_capped_edges += trimmed_face;
+      if (skipped_edge)
+        continue;
       const long long band[3] = {key_band(k[0]), key_band(k[1]), key_band(k[2])};
       long long lowest =
           (std::max)(band_level(std::min({band[0], band[1], band[2]})), window.lowest);
