@@ -11,11 +11,14 @@
 #include <CGAL/Highlight_lines/default_light_setup.h>
 #include <CGAL/compute_highlight_lines.h>
 
+#include <boost/property_map/property_map.hpp>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -108,6 +111,33 @@ TEST(HighlightDistancePly, WrittenReadBackAndContouredAtTheNodes)
     }
     std::remove(path.c_str());
   }
+}
+
+// highlight_distances() on Polyhedron_3 (vertices as handles, a map keyed by them) gives the
+// values of Surface_mesh on the same surface, vertex for vertex in input order, NaN alike.
+TEST(HighlightDistances, SurfaceMeshAndPolyhedronAgree)
+{
+  const Soup soup = grid(
+      30, 0.1, -1.5, -1.5, [](double x, double y) { return 0.4 * std::sin(x) * std::cos(y); }, 0.3,
+      11);
+  const Surface_mesh sm = to_mesh<Surface_mesh>(soup);
+  const Polyhedron poly = to_mesh<Polyhedron>(soup);
+  const Lights lights(Point(0.2, -0.1, 3), Vector(1, 0.3, 0), Vector(-0.06, 0.2, 1), 0.07);
+
+  std::vector<double> from_sm(num_vertices(sm), 0.0);
+  HL::Highlight_line_sweeper<Surface_mesh>(sm).highlight_distances(
+      lights, CGAL::make_property_map(from_sm), HLP::facing_side_only(true));
+  std::map<Polyhedron::Vertex_const_handle, double> by_handle;
+  HL::Highlight_line_sweeper<Polyhedron>(poly).highlight_distances(
+      lights, boost::make_assoc_property_map(by_handle), HLP::facing_side_only(true));
+
+  ASSERT_EQ(by_handle.size(), from_sm.size());
+  std::size_t i = 0, defined = 0;
+  for (auto v = poly.vertices_begin(); v != poly.vertices_end(); ++v, ++i) {
+    ASSERT_TRUE(ply_test_same(by_handle[v], from_sm[i])) << "vertex " << i;
+    defined += !std::isnan(from_sm[i]);
+  }
+  EXPECT_GT(defined, from_sm.size() / 2);
 }
 
 } // namespace
