@@ -19,6 +19,17 @@ using CGAL::Highlight_lines::Box_QP_report;
 using CGAL::Highlight_lines::Box_QP_status;
 using Sparse_matrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
+// The side of a large grid: under AddressSanitizer (CI's instrumented build, several times
+// slower) two thirds of it, the same code paths on a grid of 10^4 instead of 2 x 10^4 variables.
+int large_side(int side)
+{
+#if defined(__SANITIZE_ADDRESS__)
+  return 2 * side / 3;
+#else
+  return side;
+#endif
+}
+
 // Q = W^T M^-1 W for the weighted Laplacian W of an m x m grid (with diagonals, random edge
 // weights, Dirichlet boundary) and random "areas" M; bounds |x_i| <= b_i with b_i varying.
 // A jitter changes each inverse area by up to that fraction (and nothing else): the matrix
@@ -167,7 +178,7 @@ void expect_known_solution(const Grid_problem& grid, const Known_solution& probl
 
 TEST(BoxQPLargeProblems, KKTConditionsHoldOnLargeBiLaplacianProblems)
 {
-  const Grid_problem grid(150, 1);
+  const Grid_problem grid(large_side(150), 1);
   for (double active_fraction : {0.05, 0.3}) {
     SCOPED_TRACE(active_fraction);
     const Known_solution problem(grid, active_fraction, 0.);
@@ -178,7 +189,7 @@ TEST(BoxQPLargeProblems, KKTConditionsHoldOnLargeBiLaplacianProblems)
 
 TEST(BoxQPLargeProblems, WarmStartFromANearbyProblemTakesFewerIterations)
 {
-  const Grid_problem grid(120, 2);
+  const Grid_problem grid(large_side(120), 2);
   const Known_solution nearby(grid, 0.15, 0.), problem(grid, 0.15, 0.02);
   Active_set_box_QP_solver solver;
   const Result previous = solve(solver, grid, nearby);
@@ -207,7 +218,7 @@ TEST(BoxQPLargeProblems, WarmStartOneBoundAwayFromTheOptimumSkipsRefactorisation
 {
   // Conjugate gradients preconditioned by the factorisation of the warm start's free set
   // solve the next system when the active set changes by a single bound.
-  const Grid_problem grid(200, 4);
+  const Grid_problem grid(large_side(200), 4);
   const Known_solution problem(grid, 0.1, 0.5);
   std::vector<double> x0(problem.x.data(), problem.x.data() + grid.n);
   for (int k = 0; k < grid.n; ++k)
@@ -248,7 +259,7 @@ TEST(BoxQPLargeProblems, WarmStartOnANearbyMatrixIsPreconditionedByTheLastFactor
 {
   // The next program of a fairing: other values of P, a shifted optimum. The factorisation
   // left by the last solve preconditions conjugate gradients, so that no new one is needed.
-  const Grid_problem grid(150, 6), next_grid(150, 6, 0.02);
+  const Grid_problem grid(large_side(150), 6), next_grid(large_side(150), 6, 0.02);
   const Known_solution problem(grid, 0.1, 0.), next(next_grid, 0.1, 0.);
   Active_set_box_QP_solver solver, fresh;
   const Result first = solve(solver, grid, problem);
