@@ -134,7 +134,7 @@ std::vector<HB::Irregularity> detect(const HB::Mesh& mesh)
 
 struct Curve_point
 {
-  std::size_t defects = 0, found = 0, regions = 0, true_regions = 0, own = 0;
+  std::size_t defects = 0, found = 0, located = 0, regions = 0, true_regions = 0, own = 0;
 };
 
 void print_curve(const std::string& name, const std::vector<Curve_point>& points,
@@ -178,6 +178,9 @@ void hood_curve()
 // h in {1, 0.5, 0.2, 0.1} ē, `seeds` meshes with four defects each (radius 5 ē, dent or bump
 // at random, centred on any vertex at least 2R from the border and 3R from each other).
 //   recall     defects whose centre vertex lies in a region;
+//   located    defects whose centre vertex lies in a region that holds no other defect and
+//              lies within 3R of it (a region over much of the mesh holds defects without
+//              locating them);
 //   precision  regions holding a defect over all regions (every region without one is false);
 //   first      found defects ranked above every region of the same mesh that holds none;
 //   >undented  defects whose region ranks above every region found on the undented mesh
@@ -187,8 +190,8 @@ void hood_curve()
 // compute_highlight_lines() with the default lights (30 lines) on the same mesh.
 struct Table_row
 {
-  std::size_t defects = 0, found = 0, regions = 0, true_regions = 0, first = 0, above_undented = 0,
-              rank_sum = 0;
+  std::size_t defects = 0, found = 0, located = 0, regions = 0, true_regions = 0, first = 0,
+              above_undented = 0, rank_sum = 0;
 };
 
 void shared_table(const std::string& name, unsigned seeds)
@@ -226,7 +229,8 @@ void shared_table(const std::string& name, unsigned seeds)
             << std::defaultfloat << "  undented mesh: " << own.size() << " region(s)";
   for (const auto& r : own)
     std::cout << " [" << HB::describe(r) << "]";
-  std::cout << "\n  h/ē   defects  recall  precision  first  >undented  mean rank  regions\n";
+  std::cout
+      << "\n  h/ē   defects  recall  located  precision  first  >undented  mean rank  regions\n";
   for (double h : {1.0, 0.5, 0.2, 0.1}) {
     Table_row row;
     for (unsigned seed = 1; seed <= seeds; ++seed) {
@@ -240,6 +244,8 @@ void shared_table(const std::string& name, unsigned seeds)
       row.true_regions += s.true_regions;
       const auto holds = HB::regions_of_defects(mesh, defects, found);
       const auto genuine = HB::genuine_regions(mesh, defects, found);
+      for (bool l : HB::located_defects(mesh, defects, found))
+        row.located += l;
       for (std::size_t d = 0; d < defects.size(); ++d) {
         const std::size_t r = holds[d];
         if (r == std::size_t(-1))
@@ -258,7 +264,8 @@ void shared_table(const std::string& name, unsigned seeds)
     std::cout << "  " << std::setw(4) << h << "  " << std::setw(7) << row.defects << "  "
               << std::fixed << std::setprecision(3) << std::setw(6)
               << (row.defects ? double(row.found) / double(row.defects) : 1.0) << "  "
-              << std::setw(9)
+              << std::setw(7) << (row.defects ? double(row.located) / double(row.defects) : 1.0)
+              << "  " << std::setw(9)
               << (row.regions ? double(row.true_regions) / double(row.regions) : 1.0) << "  "
               << std::setw(5) << (row.found ? double(row.first) / double(row.found) : 1.0) << "  "
               << std::setw(9)
