@@ -178,9 +178,8 @@ void hood_curve()
 // h in {1, 0.5, 0.2, 0.1} ē, `seeds` meshes with four defects each (radius 5 ē, dent or bump
 // at random, centred on any vertex at least 2R from the border and 3R from each other).
 //   recall     defects whose centre vertex lies in a region;
-//   located    defects whose centre vertex lies in a region that holds no other defect and
-//              lies within 3R of it (a region over much of the mesh holds defects without
-//              locating them);
+//   located    defects whose region lies within 3R of the defects it holds (a region over
+//              much of the mesh holds defects without locating them);
 //   precision  regions holding a defect over all regions (every region without one is false);
 //   first      found defects ranked above every region of the same mesh that holds none;
 //   >undented  defects whose region ranks above every region found on the undented mesh

@@ -188,11 +188,11 @@ inline std::vector<std::size_t> regions_of_defects(const Mesh& mesh,
   return holds;
 }
 
-/// Per defect, whether it is located: the region holding its centre vertex
-/// (`regions_of_defects()`) holds no other defect and lies within `reach` radii of its centre.
-/// A region spread over much of the mesh holds the defects it covers without locating them
-/// (fairing it would reshape the design around them); a defect's anomalies lie within
-/// R + 3w/2 of it, and its region adds a margin of a few rings.
+/// Per defect, whether it is located: every vertex of the region holding its centre vertex
+/// (`regions_of_defects()`) lies within `reach` radii of a defect that region holds. A region
+/// spread over much of the mesh holds the defects it covers without locating them (fairing it
+/// would reshape the design around them); a defect's anomalies lie within R + 3w/2 of it, and
+/// its region adds a margin of a few rings.
 inline std::vector<bool> located_defects(const Mesh& mesh,
                                          const std::vector<Injected_defect>& defects,
                                          const std::vector<Irregularity>& found, double reach = 3)
@@ -204,11 +204,13 @@ inline std::vector<bool> located_defects(const Mesh& mesh,
     if (holds[d] == std::size_t(-1))
       continue;
     bool local = true;
-    for (std::size_t e = 0; e < defects.size(); ++e)
-      local = local && (e == d || holds[e] != holds[d]);
-    for (vertex_descriptor v : region_vertices[holds[d]])
-      local = local && CGAL::squared_distance(mesh.point(v), defects[d].centre) <=
-                           std::pow(reach * defects[d].radius, 2);
+    for (vertex_descriptor v : region_vertices[holds[d]]) {
+      bool near = false;
+      for (std::size_t e = 0; e < defects.size() && !near; ++e)
+        near = holds[e] == holds[d] && CGAL::squared_distance(mesh.point(v), defects[e].centre) <=
+                                           std::pow(reach * defects[e].radius, 2);
+      local = local && near;
+    }
     located[d] = local;
   }
   return located;

@@ -216,6 +216,27 @@ TEST(Detection, FindsMostDefectsOfAFiftiethOfAnEdgeLength)
   EXPECT_EQ(s.precision(), 1.0);
 }
 
+// The benchmark's stricter count: a region spread over the mesh holds defects, it does not
+// locate them.
+TEST(Detection, LocatesDefectsOnHoodsWhereARegionOverTheMeshDoesNot)
+{
+  HB::Mesh mesh = smooth_hood(3);
+  const auto defects = HB::inject_defects(
+      mesh, 2, 5.0, 0.2, 3, [](auto) { return true; }, 6);
+  ASSERT_EQ(defects.size(), 2u);
+  const auto found = detect_from_above(mesh);
+  const auto located = HB::located_defects(mesh, defects, found);
+  EXPECT_EQ(HB::match(mesh, defects, found).found_defects, 2u);
+  EXPECT_TRUE(located[0] && located[1]);
+  HB::Irregularity everything;
+  for (auto f : faces(mesh))
+    everything.faces.push_back(f);
+  const std::vector<HB::Irregularity> one_region{everything};
+  EXPECT_EQ(HB::match(mesh, defects, one_region).found_defects, 2u);
+  for (bool l : HB::located_defects(mesh, defects, one_region))
+    EXPECT_FALSE(l);
+}
+
 TEST(Detection, HardlyAnyFalseAlarmOnSmoothHoods)
 {
   const HB::Detection_score s = score_on_hoods(0.0);
