@@ -177,7 +177,8 @@ void hood_curve()
 // is an injected defect: design, or the mesh's own irregularities), then per height
 // h in {1, 0.5, 0.2, 0.1} ē, `seeds` meshes with four defects each (radius 5 ē, dent or bump
 // at random, centred on any vertex at least 2R from the border and 3R from each other).
-//   recall     defects whose centre vertex lies in a region;
+//   recall     defects whose centre vertex lies in a region (compare with the share of the
+//              vertices the undented mesh's regions cover, printed above the table);
 //   located    defects whose region lies within 3R of the defects it holds (a region over
 //              much of the mesh holds defects without locating them);
 //   precision  regions holding a defect over all regions (every region without one is false);
@@ -228,6 +229,19 @@ void shared_table(const std::string& name, unsigned seeds)
             << std::defaultfloat << "  undented mesh: " << own.size() << " region(s)";
   for (const auto& r : own)
     std::cout << " [" << HB::describe(r) << "]";
+  // The recall a defect would get from these regions alone: the share of the vertices they
+  // cover (a defect is centred on a vertex at random; the regions on the dented mesh are
+  // about the same).
+  {
+    std::set<HB::vertex_descriptor> covered;
+    for (const auto& vs : HB::vertices_of_regions(original, own))
+      covered.insert(vs.begin(), vs.end());
+    std::cout << "\n  they cover " << std::fixed << std::setprecision(2)
+              << double(covered.size()) / double(num_vertices(original))
+              << " of the vertices: the recall of a defect centred at random that the detection "
+                 "misses"
+              << std::defaultfloat;
+  }
   std::cout
       << "\n  h/ē   defects  recall  located  precision  first  >undented  mean rank  regions\n";
   for (double h : {1.0, 0.5, 0.2, 0.1}) {
