@@ -13,6 +13,8 @@
 //
 //   benchmark_detection --shared [--seeds N]   the shared meshes only (N x 4 defects/height)
 //   benchmark_detection --mesh NAME            one shared mesh
+//   benchmark_detection --local [--mesh NAME]  the detection near each defect only
+//                                              (face_range: the faces within 3R of it)
 //
 // Speed: the detection (3 x 2 light setups) on the bundled beetle Loop-subdivided twice
 // (618,496 triangles), as a ratio to one compute_highlight_lines() on the same mesh measured
@@ -290,6 +292,62 @@ void shared_table(const std::string& name, unsigned seeds)
   }
 }
 
+// Whether the measure sees the defects where the rest of the mesh is left out: per defect,
+// the detection restricted (face_range) to the faces within 3R of its centre, on the dented
+// mesh (seen: a region holds the centre vertex) and on the same faces of the undented mesh
+// (quiet: no region there), and whether the dented disc's strongest region (by score) is
+// stronger than every region of the undented disc. The lights are those of the whole mesh.
+void local_table(const std::string& name, unsigned seeds)
+{
+  HB::Mesh original;
+  std::ifstream in(test::shared_data(name));
+  if (!in || !CGAL::IO::read_OFF(in, original)) {
+    std::cout << "\n" << name << ": not found, skipped\n";
+    return;
+  }
+  const auto lights = HL::default_light_setup(original, HLP::number_of_lines(30));
+  std::cout << "\n"
+            << name << ", detection within 3R of each defect\n  h/ē   defects  seen  "
+            << "quiet undented disc  stronger\n";
+  for (double h : {1.0, 0.5, 0.2, 0.1}) {
+    std::size_t defects = 0, seen = 0, quiet = 0, stronger = 0;
+    for (unsigned seed = 1; seed <= seeds; ++seed) {
+      HB::Mesh mesh = original;
+      for (const auto& d : HB::inject_defects(mesh, 4, 5.0, h, seed, [](auto) { return true; })) {
+        std::vector<HB::face_descriptor> disc;
+        for (auto f : faces(mesh)) {
+          bool near = false;
+          for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+            near = near ||
+                   CGAL::squared_distance(original.point(v), d.centre) < std::pow(3 * d.radius, 2);
+          if (near)
+            disc.push_back(f);
+        }
+        std::vector<HB::Irregularity> dented, undented;
+        CGAL::detect_highlight_line_irregularities(mesh, lights, std::back_inserter(dented),
+                                                   HLP::face_range(disc));
+        CGAL::detect_highlight_line_irregularities(original, lights, std::back_inserter(undented),
+                                                   HLP::face_range(disc));
+        ++defects;
+        seen += HB::regions_of_defects(mesh, {d}, dented)[0] != std::size_t(-1);
+        quiet += undented.empty();
+        // The dented disc's strongest region beats everything of the undented disc.
+        double best = 0, best_undented = 0;
+        for (const auto& r : dented)
+          best = (std::max)(best, r.score);
+        for (const auto& r : undented)
+          best_undented = (std::max)(best_undented, r.score);
+        stronger += best > best_undented;
+      }
+    }
+    std::cout << "  " << std::setw(4) << h << "  " << std::setw(7) << defects << "  " << std::fixed
+              << std::setprecision(3) << std::setw(5) << double(seen) / double(defects) << "  "
+              << std::setw(19) << double(quiet) / double(defects) << "  " << std::setw(8)
+              << double(stronger) / double(defects) << std::defaultfloat << "\n"
+              << std::flush;
+  }
+}
+
 void curves(const std::vector<std::string>& meshes, unsigned seeds, bool hood)
 {
   if (hood) {
@@ -350,7 +408,7 @@ BENCHMARK(BM_detect)->Unit(benchmark::kMillisecond)->UseRealTime();
 int main(int argc, char** argv)
 {
   std::vector<char*> args;
-  bool curves_only = false, hood = true;
+  bool curves_only = false, hood = true, local = false;
   unsigned seeds = 2;
   std::vector<std::string> meshes{"beetle.off",  "bunny.off",      "camelhead.off",
                                   "fandisk.off", "rocker-arm.off", "spot.off"};
@@ -361,6 +419,8 @@ int main(int argc, char** argv)
       curves_only = true, hood = false;
     else if (std::strcmp(argv[i], "--mesh") == 0 && i + 1 < argc)
       meshes.assign(1, argv[++i]), curves_only = true, hood = false;
+    else if (std::strcmp(argv[i], "--local") == 0) // the detection near each defect only
+      local = true, curves_only = true, hood = false;
     else if (std::strcmp(argv[i], "--seeds") == 0 && i + 1 < argc)
       seeds = unsigned(std::stoul(argv[++i]));
     else
@@ -375,7 +435,11 @@ int main(int argc, char** argv)
       benchmark::RunSpecifiedBenchmarks();
       benchmark::Shutdown();
     }
-    curves(meshes, seeds, hood);
+    if (local)
+      for (const auto& name : meshes)
+        local_table(name, seeds);
+    else
+      curves(meshes, seeds, hood);
   } catch (const std::exception& e) {
     std::cerr << "benchmark_detection: " << e.what() << "\n";
     return 1;
