@@ -13,6 +13,8 @@
 //
 //   benchmark_detection --shared [--seeds N]   the shared meshes only (N x 4 defects/height)
 //   benchmark_detection --mesh NAME            one shared mesh
+//   benchmark_detection --local [--mesh NAME]  the detection near each defect only
+//                                              (face_range: the faces within 3R of it)
 //
 // Speed: the detection (3 x 2 light setups) on the bundled beetle Loop-subdivided twice
 // (618,496 triangles), as a ratio to one compute_highlight_lines() on the same mesh measured
@@ -134,7 +136,7 @@ std::vector<HB::Irregularity> detect(const HB::Mesh& mesh)
 
 struct Curve_point
 {
-  std::size_t defects = 0, found = 0, regions = 0, true_regions = 0, own = 0;
+  std::size_t defects = 0, found = 0, located = 0, regions = 0, true_regions = 0, own = 0;
 };
 
 void print_curve(const std::string& name, const std::vector<Curve_point>& points,
@@ -177,7 +179,10 @@ void hood_curve()
 // is an injected defect: design, or the mesh's own irregularities), then per height
 // h in {1, 0.5, 0.2, 0.1} ē, `seeds` meshes with four defects each (radius 5 ē, dent or bump
 // at random, centred on any vertex at least 2R from the border and 3R from each other).
-//   recall     defects whose centre vertex lies in a region;
+//   recall     defects whose centre vertex lies in a region (compare with the share of the
+//              vertices the undented mesh's regions cover, printed above the table);
+//   located    defects whose region lies within 3R of the defects it holds (a region over
+//              much of the mesh holds defects without locating them);
 //   precision  regions holding a defect over all regions (every region without one is false);
 //   first      found defects ranked above every region of the same mesh that holds none;
 //   >undented  defects whose region ranks above every region found on the undented mesh
@@ -187,8 +192,8 @@ void hood_curve()
 // compute_highlight_lines() with the default lights (30 lines) on the same mesh.
 struct Table_row
 {
-  std::size_t defects = 0, found = 0, regions = 0, true_regions = 0, first = 0, above_undented = 0,
-              rank_sum = 0;
+  std::size_t defects = 0, found = 0, located = 0, regions = 0, true_regions = 0, first = 0,
+              above_undented = 0, rank_sum = 0;
 };
 
 void shared_table(const std::string& name, unsigned seeds)
@@ -226,7 +231,21 @@ void shared_table(const std::string& name, unsigned seeds)
             << std::defaultfloat << "  undented mesh: " << own.size() << " region(s)";
   for (const auto& r : own)
     std::cout << " [" << HB::describe(r) << "]";
-  std::cout << "\n  h/ē   defects  recall  precision  first  >undented  mean rank  regions\n";
+  // The recall a defect would get from these regions alone: the share of the vertices they
+  // cover (a defect is centred on a vertex at random; the regions on the dented mesh are
+  // about the same).
+  {
+    std::set<HB::vertex_descriptor> covered;
+    for (const auto& vs : HB::vertices_of_regions(original, own))
+      covered.insert(vs.begin(), vs.end());
+    std::cout << "\n  they cover " << std::fixed << std::setprecision(2)
+              << double(covered.size()) / double(num_vertices(original))
+              << " of the vertices: the recall of a defect centred at random that the detection "
+                 "misses"
+              << std::defaultfloat;
+  }
+  std::cout
+      << "\n  h/ē   defects  recall  located  precision  first  >undented  mean rank  regions\n";
   for (double h : {1.0, 0.5, 0.2, 0.1}) {
     Table_row row;
     for (unsigned seed = 1; seed <= seeds; ++seed) {
@@ -240,6 +259,8 @@ void shared_table(const std::string& name, unsigned seeds)
       row.true_regions += s.true_regions;
       const auto holds = HB::regions_of_defects(mesh, defects, found);
       const auto genuine = HB::genuine_regions(mesh, defects, found);
+      for (bool l : HB::located_defects(mesh, defects, found))
+        row.located += l;
       for (std::size_t d = 0; d < defects.size(); ++d) {
         const std::size_t r = holds[d];
         if (r == std::size_t(-1))
@@ -258,7 +279,8 @@ void shared_table(const std::string& name, unsigned seeds)
     std::cout << "  " << std::setw(4) << h << "  " << std::setw(7) << row.defects << "  "
               << std::fixed << std::setprecision(3) << std::setw(6)
               << (row.defects ? double(row.found) / double(row.defects) : 1.0) << "  "
-              << std::setw(9)
+              << std::setw(7) << (row.defects ? double(row.located) / double(row.defects) : 1.0)
+              << "  " << std::setw(9)
               << (row.regions ? double(row.true_regions) / double(row.regions) : 1.0) << "  "
               << std::setw(5) << (row.found ? double(row.first) / double(row.found) : 1.0) << "  "
               << std::setw(9)
@@ -266,6 +288,62 @@ void shared_table(const std::string& name, unsigned seeds)
               << std::setprecision(1) << std::setw(9)
               << (row.found ? double(row.rank_sum) / double(row.found) : 0.0) << "  "
               << std::setw(7) << row.regions << std::defaultfloat << "\n"
+              << std::flush;
+  }
+}
+
+// Whether the measure sees the defects where the rest of the mesh is left out: per defect,
+// the detection restricted (face_range) to the faces within 3R of its centre, on the dented
+// mesh (seen: a region holds the centre vertex) and on the same faces of the undented mesh
+// (quiet: no region there), and whether the dented disc's strongest region (by score) is
+// stronger than every region of the undented disc. The lights are those of the whole mesh.
+void local_table(const std::string& name, unsigned seeds)
+{
+  HB::Mesh original;
+  std::ifstream in(test::shared_data(name));
+  if (!in || !CGAL::IO::read_OFF(in, original)) {
+    std::cout << "\n" << name << ": not found, skipped\n";
+    return;
+  }
+  const auto lights = HL::default_light_setup(original, HLP::number_of_lines(30));
+  std::cout << "\n"
+            << name << ", detection within 3R of each defect\n  h/ē   defects  seen  "
+            << "quiet undented disc  stronger\n";
+  for (double h : {1.0, 0.5, 0.2, 0.1}) {
+    std::size_t defects = 0, seen = 0, quiet = 0, stronger = 0;
+    for (unsigned seed = 1; seed <= seeds; ++seed) {
+      HB::Mesh mesh = original;
+      for (const auto& d : HB::inject_defects(mesh, 4, 5.0, h, seed, [](auto) { return true; })) {
+        std::vector<HB::face_descriptor> disc;
+        for (auto f : faces(mesh)) {
+          bool near = false;
+          for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+            near = near ||
+                   CGAL::squared_distance(original.point(v), d.centre) < std::pow(3 * d.radius, 2);
+          if (near)
+            disc.push_back(f);
+        }
+        std::vector<HB::Irregularity> dented, undented;
+        CGAL::detect_highlight_line_irregularities(mesh, lights, std::back_inserter(dented),
+                                                   HLP::face_range(disc));
+        CGAL::detect_highlight_line_irregularities(original, lights, std::back_inserter(undented),
+                                                   HLP::face_range(disc));
+        ++defects;
+        seen += HB::regions_of_defects(mesh, {d}, dented)[0] != std::size_t(-1);
+        quiet += undented.empty();
+        // The dented disc's strongest region beats everything of the undented disc.
+        double best = 0, best_undented = 0;
+        for (const auto& r : dented)
+          best = (std::max)(best, r.score);
+        for (const auto& r : undented)
+          best_undented = (std::max)(best_undented, r.score);
+        stronger += best > best_undented;
+      }
+    }
+    std::cout << "  " << std::setw(4) << h << "  " << std::setw(7) << defects << "  " << std::fixed
+              << std::setprecision(3) << std::setw(5) << double(seen) / double(defects) << "  "
+              << std::setw(19) << double(quiet) / double(defects) << "  " << std::setw(8)
+              << double(stronger) / double(defects) << std::defaultfloat << "\n"
               << std::flush;
   }
 }
@@ -330,7 +408,7 @@ BENCHMARK(BM_detect)->Unit(benchmark::kMillisecond)->UseRealTime();
 int main(int argc, char** argv)
 {
   std::vector<char*> args;
-  bool curves_only = false, hood = true;
+  bool curves_only = false, hood = true, local = false;
   unsigned seeds = 2;
   std::vector<std::string> meshes{"beetle.off",  "bunny.off",      "camelhead.off",
                                   "fandisk.off", "rocker-arm.off", "spot.off"};
@@ -341,6 +419,8 @@ int main(int argc, char** argv)
       curves_only = true, hood = false;
     else if (std::strcmp(argv[i], "--mesh") == 0 && i + 1 < argc)
       meshes.assign(1, argv[++i]), curves_only = true, hood = false;
+    else if (std::strcmp(argv[i], "--local") == 0) // the detection near each defect only
+      local = true, curves_only = true, hood = false;
     else if (std::strcmp(argv[i], "--seeds") == 0 && i + 1 < argc)
       seeds = unsigned(std::stoul(argv[++i]));
     else
@@ -355,7 +435,11 @@ int main(int argc, char** argv)
       benchmark::RunSpecifiedBenchmarks();
       benchmark::Shutdown();
     }
-    curves(meshes, seeds, hood);
+    if (local)
+      for (const auto& name : meshes)
+        local_table(name, seeds);
+    else
+      curves(meshes, seeds, hood);
   } catch (const std::exception& e) {
     std::cerr << "benchmark_detection: " << e.what() << "\n";
     return 1;

@@ -188,6 +188,34 @@ inline std::vector<std::size_t> regions_of_defects(const Mesh& mesh,
   return holds;
 }
 
+/// Per defect, whether it is located: every vertex of the region holding its centre vertex
+/// (`regions_of_defects()`) lies within `reach` radii of a defect that region holds. A region
+/// spread over much of the mesh holds the defects it covers without locating them (fairing it
+/// would reshape the design around them); a defect's anomalies lie within R + 3w/2 of it, and
+/// its region adds a margin of a few rings.
+inline std::vector<bool> located_defects(const Mesh& mesh,
+                                         const std::vector<Injected_defect>& defects,
+                                         const std::vector<Irregularity>& found, double reach = 3)
+{
+  const auto region_vertices = vertices_of_regions(mesh, found);
+  const auto holds = regions_of_defects(mesh, defects, found);
+  std::vector<bool> located(defects.size(), false);
+  for (std::size_t d = 0; d < defects.size(); ++d) {
+    if (holds[d] == std::size_t(-1))
+      continue;
+    bool local = true;
+    for (vertex_descriptor v : region_vertices[holds[d]]) {
+      bool near = false;
+      for (std::size_t e = 0; e < defects.size() && !near; ++e)
+        near = holds[e] == holds[d] && CGAL::squared_distance(mesh.point(v), defects[e].centre) <=
+                                           std::pow(reach * defects[e].radius, 2);
+      local = local && near;
+    }
+    located[d] = local;
+  }
+  return located;
+}
+
 /// Per region, whether it has a vertex within the radius of some defect.
 inline std::vector<bool> genuine_regions(const Mesh& mesh,
                                          const std::vector<Injected_defect>& defects,

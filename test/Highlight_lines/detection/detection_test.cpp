@@ -7,6 +7,7 @@
 
 #include <CGAL/Aff_transformation_3.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/Highlight_lines/default_light_setup.h>
 #include <CGAL/Highlight_lines/fairing_building_blocks.h>
 #include <CGAL/detect_and_fair_highlight_line_irregularities.h>
@@ -213,6 +214,27 @@ TEST(Detection, FindsMostDefectsOfAFiftiethOfAnEdgeLength)
   const HB::Detection_score s = score_on_hoods(0.02);
   EXPECT_GE(s.recall(), 0.9);
   EXPECT_EQ(s.precision(), 1.0);
+}
+
+// The benchmark's stricter count: a region spread over the mesh holds defects, it does not
+// locate them.
+TEST(Detection, LocatesDefectsOnHoodsWhereARegionOverTheMeshDoesNot)
+{
+  HB::Mesh mesh = smooth_hood(3);
+  const auto defects = HB::inject_defects(
+      mesh, 2, 5.0, 0.2, 3, [](auto) { return true; }, 6);
+  ASSERT_EQ(defects.size(), 2u);
+  const auto found = detect_from_above(mesh);
+  const auto located = HB::located_defects(mesh, defects, found);
+  EXPECT_EQ(HB::match(mesh, defects, found).found_defects, 2u);
+  EXPECT_TRUE(located[0] && located[1]);
+  HB::Irregularity everything;
+  for (auto f : faces(mesh))
+    everything.faces.push_back(f);
+  const std::vector<HB::Irregularity> one_region{everything};
+  EXPECT_EQ(HB::match(mesh, defects, one_region).found_defects, 2u);
+  for (bool l : HB::located_defects(mesh, defects, one_region))
+    EXPECT_FALSE(l);
 }
 
 TEST(Detection, HardlyAnyFalseAlarmOnSmoothHoods)
@@ -513,6 +535,105 @@ TEST(Detection, ReportsProgressCanBeCancelledAndRunsInParallel)
   EXPECT_EQ(face_keys(mesh, parallel[0]), face_keys(mesh, found[0]));
   EXPECT_DOUBLE_EQ(parallel[0].score, found[0].score);
 #endif
+}
+
+TEST(Detection, SweepOptionsActAlikeOnPolyhedronAndSurfaceMesh)
+{
+  test::Soup soup = test::grid(40, 2.0 / 40, -1, -1, hood, 0.3, 7);
+  HB::Mesh mesh = test::to_mesh<HB::Mesh>(soup);
+  ASSERT_EQ(HB::inject_defects(mesh, 1, 4.0, 0.5, 7, [](auto) { return true; }).size(), 1u);
+  for (auto v : vertices(mesh))
+    soup.points[std::size_t(v)] = mesh.point(v);
+  const test::Polyhedron polyhedron = test::to_mesh<test::Polyhedron>(soup);
+  const auto lights = HL::default_light_setup(mesh, HLP::number_of_lines(30));
+  for (bool all_sides : {false, true}) {
+    std::vector<double> progress_sm, progress_ph;
+    std::vector<HB::Irregularity> a;
+    std::vector<HL::Highlight_line_irregularity<test::Polyhedron>> b;
+    CGAL::detect_highlight_line_irregularities(
+        mesh, lights, std::back_inserter(a),
+        HLP::combine(HLP::all_sides(all_sides), CGAL::parameters::callback([&](double f) {
+                       progress_sm.push_back(f);
+                       return true;
+                     })));
+    CGAL::detect_highlight_line_irregularities(
+        polyhedron, lights, std::back_inserter(b),
+        HLP::combine(HLP::all_sides(all_sides), CGAL::parameters::callback([&](double f) {
+                       progress_ph.push_back(f);
+                       return true;
+                     })));
+    // 3 orientations x 2 offsets per plane: one plane, or the six sides of a cube.
+    EXPECT_EQ(progress_sm.size(), (all_sides ? 6u : 1u) * 6u);
+    EXPECT_EQ(progress_ph, progress_sm);
+    ASSERT_GE(a.size(), 1u);
+    ASSERT_EQ(b.size(), a.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      EXPECT_EQ(b[i].faces.size(), a[i].faces.size());
+      EXPECT_EQ(b[i].kind, a[i].kind);
+      EXPECT_NEAR(b[i].score, a[i].score, 1e-9 * a[i].score);
+      EXPECT_NEAR(b[i].confidence, a[i].confidence, 1e-12);
+    }
+    // A cancelled sweep writes nothing, whatever the mesh type.
+    b.clear();
+    std::size_t calls = 0;
+    CGAL::detect_highlight_line_irregularities(
+        polyhedron, lights, std::back_inserter(b),
+        HLP::combine(HLP::all_sides(all_sides),
+                     CGAL::parameters::callback([&](double) { return ++calls < 2; })));
+    EXPECT_EQ(calls, 2u);
+    EXPECT_TRUE(b.empty());
+  }
+  // minimum_confidence 0: the hood's defect is faired, on both mesh types alike (below); at the
+  // default, the undented fandisk's regions (design along its fillets, of low confidence) are
+  // skipped on both, and the Polyhedron_3 is left as it was.
+  {
+    HB::Mesh fandisk;
+    std::ifstream in(test::shared_data("fandisk.off"));
+    if (in && CGAL::IO::read_OFF(in, fandisk)) {
+      test::Polyhedron fandisk_ph, before;
+      CGAL::copy_face_graph(fandisk, fandisk_ph);
+      before = fandisk_ph;
+      const auto fandisk_lights = HL::default_light_setup(fandisk, HLP::number_of_lines(30));
+      const auto sm = CGAL::detect_and_fair_highlight_line_irregularities(fandisk, fandisk_lights);
+      const auto ph =
+          CGAL::detect_and_fair_highlight_line_irregularities(fandisk_ph, fandisk_lights);
+      ASSERT_EQ(ph.size(), sm.size());
+      std::size_t skipped = 0;
+      for (std::size_t i = 0; i < ph.size(); ++i) {
+        EXPECT_EQ(ph[i].skipped, sm[i].skipped);
+        EXPECT_EQ(ph[i].skipped, ph[i].irregularity.confidence < 0.5);
+        skipped += ph[i].skipped;
+        if (ph[i].skipped) {
+          EXPECT_FALSE(ph[i].repaired);
+        }
+      }
+      EXPECT_GE(skipped, 1u);
+      if (skipped == ph.size()) {
+        auto p = vertices(before).begin();
+        for (auto v : vertices(fandisk_ph))
+          EXPECT_EQ(v->point(), (*p++)->point());
+      }
+    }
+  }
+  test::Polyhedron faired_ph = polyhedron;
+  HB::Mesh faired_sm = mesh;
+  const auto ph = CGAL::detect_and_fair_highlight_line_irregularities(faired_ph, lights,
+                                                                      HLP::minimum_confidence(0.0));
+  const auto sm = CGAL::detect_and_fair_highlight_line_irregularities(faired_sm, lights,
+                                                                      HLP::minimum_confidence(0.0));
+  ASSERT_EQ(ph.size(), sm.size());
+  ASSERT_FALSE(ph.empty());
+  EXPECT_FALSE(ph[0].skipped);
+  EXPECT_TRUE(ph[0].repaired) << ph[0].failure;
+  for (std::size_t i = 0; i < ph.size(); ++i) {
+    EXPECT_EQ(ph[i].skipped, sm[i].skipped);
+    EXPECT_EQ(ph[i].repaired, sm[i].repaired);
+  }
+  std::size_t i = 0;
+  for (auto v : vertices(faired_ph))
+    EXPECT_LT(CGAL::squared_distance(v->point(),
+                                     faired_sm.point(HB::vertex_descriptor(std::uint32_t(i++)))),
+              1e-20);
 }
 
 // --- Bad input ----------------------------------------------------------------------------
