@@ -307,8 +307,7 @@ public:
     internal::compute_highlight_nodes<ConcurrencyTag>(mesh_, owned_edges_, out.keys, out.distances,
                                                       out.summary.on_level, lights.spacing_value(),
                                                       window, out.nodes);
-    internal::connect_highlight_nodes<ConcurrencyTag>(mesh_, out.keys, out.nodes, window,
-                                                      out.segments);
+    internal::connect_highlight_nodes<ConcurrencyTag>(mesh_, out.nodes, window, out.segments);
     internal::trace_lines(out.nodes.nodes, out.segments.segments, out.lines);
   }
 

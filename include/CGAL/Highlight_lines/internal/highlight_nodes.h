@@ -67,6 +67,7 @@ struct Active_face
   int face;
   unsigned owned; // bit j: edge j is owned by this face; bit j + 3: its canonical direction
                   // is from corner j + 1 to corner j (see compute_owned_edges())
+  std::array<long long, 3> keys; // of the corners: the later passes gather no keys
 };
 
 struct Highlight_nodes
@@ -155,12 +156,30 @@ void compute_owned_edges(const Local_mesh<TriangleMesh>& lm, std::vector<unsigne
     }
 }
 
-// The faces whose three corners lie strictly inside one level band (equal odd keys) carry no
-// segment and none of their edges a node; the others are gathered, in face order.
+// Whether the edge between corners of keys a and b can carry something of the window: a node
+// strictly inside (m·s strictly between the d values of its ends, kept or trimmed), or an end
+// exactly on a level m of the window (a vertex node of a segment or highlight edge); that is,
+// some band 2m of the window lies within the bands of the ends.
+inline bool edge_meets_window(long long key_a, long long key_b, const Level_window& window)
+{
+  if (!keys_usable(key_a, key_b))
+    return false;
+  const long long a = key_band(key_a), b = key_band(key_b);
+  const long long low = (std::max)((std::min)(a, b), 2 * window.lowest),
+                  high = (std::min)((std::max)(a, b), 2 * window.highest);
+  return low <= high && (!(low & 1) || low < high);
+}
+
+// The faces that can carry a node, a segment or a highlight edge of the window, in face order.
+// The others (their three corners strictly inside one level band, or no level of the window
+// between their corners) carry none: a segment inside a face lies at a level m with 2m between
+// the bands of two of its corners, a node on a face edge between those of its ends (and edges
+// trimmed beyond the facing window still have levels of the window strictly inside).
 template <typename ConcurrencyTag, typename TriangleMesh>
 void find_active_faces(const Local_mesh<TriangleMesh>& lm,
                        const std::vector<unsigned char>& owned_edges,
-                       const std::vector<long long>& keys, std::vector<Active_face>& active)
+                       const std::vector<long long>& keys, const Level_window& window,
+                       std::vector<Active_face>& active)
 {
   const Chunks chunks = chunks_for<ConcurrencyTag>(lm.number_of_model_faces, std::size_t(1) << 15);
   std::vector<std::vector<Active_face>> parts(chunks.size() > 1 ? chunks.size() : 0);
@@ -170,10 +189,15 @@ void find_active_faces(const Local_mesh<TriangleMesh>& lm,
     const std::array<int, 3>* fv = lm.face_vertices.data();
     const long long* k = keys.data();
     for (std::size_t f = b; f < e; ++f) {
-      const long long k0 = k[fv[f][0]];
-      if (k0 == k[fv[f][1]] && k0 == k[fv[f][2]] && (k0 & 1))
+      const std::array<long long, 3> corner_keys = {k[fv[f][0]], k[fv[f][1]], k[fv[f][2]]};
+      const long long k0 = corner_keys[0];
+      if (k0 == corner_keys[1] && k0 == corner_keys[2] && (k0 & 1))
         continue;
-      out.push_back(Active_face{fv[f], lm.face_edges[f], int(f), owned_edges[f]});
+      if (!edge_meets_window(k0, corner_keys[1], window) &&
+          !edge_meets_window(corner_keys[1], corner_keys[2], window) &&
+          !edge_meets_window(corner_keys[2], k0, window))
+        continue;
+      out.push_back(Active_face{fv[f], lm.face_edges[f], int(f), owned_edges[f], corner_keys});
     }
   });
   concatenate(parts, active);
@@ -182,8 +206,8 @@ void find_active_faces(const Local_mesh<TriangleMesh>& lm,
 // Calls f(face, j, count, first, trimmed) for every edge j owned by the active faces
 // [begin, end) with interior levels, with its interior_levels().
 template <typename F>
-void for_each_owned_edge(const std::vector<Active_face>& active, const std::vector<long long>& keys,
-                         std::size_t begin, std::size_t end, const Level_window& window, F&& f)
+void for_each_owned_edge(const std::vector<Active_face>& active, std::size_t begin, std::size_t end,
+                         const Level_window& window, F&& f)
 {
   for (std::size_t i = begin; i < end; ++i) {
     const Active_face& face = active[i];
@@ -194,8 +218,7 @@ void for_each_owned_edge(const std::vector<Active_face>& active, const std::vect
         continue;
       long long first = 0, trimmed = 0;
       const long long count = interior_levels(
-          keys[std::size_t(face.vertices[std::size_t(j)])],
-          keys[std::size_t(face.vertices[std::size_t((j + 1) % 3)])], window, first, &trimmed);
+          face.keys[std::size_t(j)], face.keys[std::size_t((j + 1) % 3)], window, first, &trimmed);
       if (count != 0 || trimmed != 0)
         f(face, j, (std::max)(count, 0LL), first, trimmed); // a skipped edge has no node
     }
@@ -249,9 +272,10 @@ void set_facing_window(const Vertex_normals& vn, const std::array<double, 3>& z,
   }
 }
 
-// The nodes of a sweep: the active faces; the nodes of their owned edges, counted per chunk
-// of active faces, numbered (by edge) and placed; then the vertex nodes. Concurrently with a
-// parallel tag, with the same result.
+// The nodes of a sweep: the active faces; the nodes of their owned edges, placed in one pass
+// per chunk of active faces and numbered by edge; then the vertex nodes. Concurrently with a
+// parallel tag (the chunks' nodes are then renumbered and concatenated in chunk order), with
+// the same result.
 template <typename ConcurrencyTag, typename TriangleMesh>
 void compute_highlight_nodes(const Local_mesh<TriangleMesh>& lm,
                              const std::vector<unsigned char>& owned_edges,
@@ -260,58 +284,65 @@ void compute_highlight_nodes(const Local_mesh<TriangleMesh>& lm,
                              const std::vector<int>& on_level_vertices, double spacing,
                              const Level_window& window, Highlight_nodes& out)
 {
-  find_active_faces<ConcurrencyTag>(lm, owned_edges, keys, out.active_faces);
+  find_active_faces<ConcurrencyTag>(lm, owned_edges, keys, window, out.active_faces);
   // Stale entries are never read: no per-sweep initialisation.
   out.edge_first_node.resize(lm.edge_vertices.size());
   out.vertex_node.resize(lm.number_of_model_vertices);
 
-  // 1. Count the nodes of the edges owned by the active faces, per chunk.
   const std::vector<Active_face>& active = out.active_faces;
   const Chunks chunks = chunks_for<ConcurrencyTag>(active.size(), std::size_t(1) << 12);
-  std::vector<std::size_t> chunk_nodes(chunks.size(), 0), chunk_capped(chunks.size(), 0),
-      chunk_trimmed(chunks.size(), 0);
-  for_each_chunk<ConcurrencyTag>(chunks, [&](std::size_t c, std::size_t b, std::size_t e) {
-    std::size_t nodes = 0, capped = 0, trimmed_nodes = 0;
-    for_each_owned_edge(
-        active, keys, b, e, window,
-        [&](const Active_face&, int, long long count, long long, long long trimmed) {
-          nodes += std::size_t(count);
-          capped += trimmed != 0;
-          trimmed_nodes += std::size_t(trimmed);
-        });
-    chunk_nodes[c] = nodes;
-    chunk_capped[c] = capped;
-    chunk_trimmed[c] = trimmed_nodes;
-  });
-
-  // 2. Node ids: edge nodes by edge, then vertex nodes.
-  std::vector<std::size_t> chunk_offset(chunks.size() + 1, 0);
-  out.number_of_capped_edges = out.number_of_trimmed_nodes = 0;
-  for (std::size_t c = 0; c < chunks.size(); ++c) {
-    chunk_offset[c + 1] = chunk_offset[c] + chunk_nodes[c];
-    out.number_of_capped_edges += chunk_capped[c];
-    out.number_of_trimmed_nodes += chunk_trimmed[c];
-  }
   std::size_t vertex_nodes = 0;
   for (int v : on_level_vertices)
     vertex_nodes += window.contains(band_level(key_band(keys[std::size_t(v)])));
-  out.number_of_edge_nodes = chunk_offset.back();
-  if (out.number_of_edge_nodes + vertex_nodes > std::size_t((std::numeric_limits<int>::max)()))
-    throw std::length_error("highlight line model: more than 2^31 nodes; restrict it with "
-                            "the level_range or face_range named parameters, or raise the "
-                            "spacing");
-  out.nodes.resize(out.number_of_edge_nodes + vertex_nodes);
+  constexpr std::size_t max_nodes = std::size_t((std::numeric_limits<int>::max)());
+  auto check_size = [](std::size_t nodes) {
+    if (nodes > max_nodes)
+      throw std::length_error("highlight line model: more than 2^31 nodes; restrict it with "
+                              "the level_range or face_range named parameters, or raise the "
+                              "spacing");
+  };
+  // An edge keeps at most max_levels_per_edge nodes. Where that could add up to more nodes
+  // than ids, they are counted first, so that the error comes before the memory is taken.
+  if (double(window.max_levels_per_edge) * double(3 * active.size()) + double(vertex_nodes) >
+      double(max_nodes)) {
+    std::vector<std::size_t> chunk_nodes(chunks.size(), 0);
+    for_each_chunk<ConcurrencyTag>(chunks, [&](std::size_t c, std::size_t b, std::size_t e) {
+      for_each_owned_edge(active, b, e, window,
+                          [&](const Active_face&, int, long long count, long long, long long) {
+                            chunk_nodes[c] += std::size_t(count);
+                          });
+    });
+    std::size_t total = vertex_nodes;
+    for (std::size_t n : chunk_nodes)
+      total += n;
+    check_size(total);
+  }
 
-  // 3. Edge nodes.
+  // Edge nodes, per chunk; edge_first_node in ids local to the chunk. Sequentially the one
+  // chunk places them in out.nodes directly, whose capacity is reused across sweeps.
+  struct Part
+  {
+    std::vector<Raw_node> nodes;
+    std::size_t capped = 0, trimmed = 0;
+  };
+  std::vector<Part> parts(chunks.size());
+  const bool single = chunks.size() <= 1;
+  if (single && !parts.empty())
+    std::swap(parts[0].nodes, out.nodes);
   for_each_chunk<ConcurrencyTag>(chunks, [&](std::size_t c, std::size_t b, std::size_t e) {
-    int next_id = int(chunk_offset[c]);
+    Part& part = parts[c];
+    std::vector<Raw_node>& nodes = part.nodes;
+    nodes.clear();
     for_each_owned_edge(
-        active, keys, b, e, window,
-        [&](const Active_face& face, int j, long long count, long long first, long long) {
+        active, b, e, window,
+        [&](const Active_face& face, int j, long long count, long long first, long long trimmed) {
+          part.capped += trimmed != 0;
+          part.trimmed += std::size_t(trimmed);
           if (count == 0)
             return;
+          check_size(nodes.size() + std::size_t(count));
           const int edge = face.edges[std::size_t(j)];
-          out.edge_first_node[std::size_t(edge)] = next_id;
+          out.edge_first_node[std::size_t(edge)] = int(nodes.size());
           // The canonical direction, without reading edge_vertices.
           const bool reversed = (face.owned & (8u << j)) != 0;
           const int va = face.vertices[std::size_t(reversed ? (j + 1) % 3 : j)],
@@ -320,7 +351,7 @@ void compute_highlight_nodes(const Local_mesh<TriangleMesh>& lm,
           const double* pa = lm.point(va);
           const double* pb = lm.point(vb);
           for (long long m = first; m < first + count; ++m) {
-            Raw_node& node = out.nodes[std::size_t(next_id++)];
+            Raw_node node;
             node.edge = edge;
             node.vertex = -1;
             node.level = m;
@@ -328,11 +359,47 @@ void compute_highlight_nodes(const Local_mesh<TriangleMesh>& lm,
             node.parameter = std::min(1.0, std::max(0.0, t)); // rounding must not leave the edge
             for (int k = 0; k < 3; ++k)
               node.point[std::size_t(k)] = pa[k] + node.parameter * (pb[k] - pa[k]);
+            nodes.push_back(node);
           }
         });
   });
 
-  // 4. Vertex nodes: vertices whose d value equals m·s exactly.
+  out.number_of_capped_edges = out.number_of_trimmed_nodes = 0;
+  for (const Part& part : parts) {
+    out.number_of_capped_edges += part.capped;
+    out.number_of_trimmed_nodes += part.trimmed;
+  }
+  if (single) {
+    if (!parts.empty())
+      std::swap(parts[0].nodes, out.nodes);
+    else
+      out.nodes.clear();
+  } else {
+    // Global ids: each chunk's edges start after the nodes of the chunks before it. An edge's
+    // nodes are consecutive, and its first one starts a run of its edge id.
+    std::size_t total = 0;
+    for (const Part& part : parts)
+      total += part.nodes.size();
+    check_size(total + vertex_nodes);
+    out.nodes.resize(total);
+    std::vector<std::size_t> offsets(parts.size() + 1, 0);
+    for (std::size_t c = 0; c < parts.size(); ++c)
+      offsets[c + 1] = offsets[c] + parts[c].nodes.size();
+    for_each_chunk<ConcurrencyTag>(
+        Chunks(parts.size(), 1), [&](std::size_t c, std::size_t, std::size_t) {
+          const std::vector<Raw_node>& nodes = parts[c].nodes;
+          const int offset = int(offsets[c]);
+          for (std::size_t i = 0; i < nodes.size(); ++i)
+            if (offset != 0 && (i == 0 || nodes[i - 1].edge != nodes[i].edge))
+              out.edge_first_node[std::size_t(nodes[i].edge)] += offset;
+          std::copy(nodes.begin(), nodes.end(), out.nodes.begin() + std::ptrdiff_t(offset));
+        });
+  }
+  out.number_of_edge_nodes = out.nodes.size();
+  check_size(out.number_of_edge_nodes + vertex_nodes);
+  out.nodes.resize(out.number_of_edge_nodes + vertex_nodes);
+
+  // Vertex nodes: vertices whose d value equals m·s exactly.
   std::size_t id = out.number_of_edge_nodes;
   for (int v : on_level_vertices) {
     const long long level = band_level(key_band(keys[std::size_t(v)]));

@@ -13,6 +13,8 @@
 #include <CGAL/Number_types/internal/Exact_type_selector.h>
 #include <CGAL/FPU.h>
 
+#include <boost/config.hpp>
+
 #include <array>
 #include <cmath>
 #include <limits>
@@ -132,7 +134,9 @@ public:
   // k = floor(d/s) with both comparisons with k·s and (k+1)·s certain and d strictly between.
   // Then the answer is the one of classify_in_general(), which starts with the same
   // comparisons; otherwise returns false.
-  bool classify_common_case(int v, bool facing_side_only, Common_case& result) const
+  // Inlined into the loop over vertices: without the call, its result stays in registers.
+  BOOST_FORCEINLINE bool classify_common_case(int v, bool facing_side_only,
+                                              Common_case& result) const
   {
     const double* n = &vn_.normal[3 * std::size_t(v)];
     const double* p = lm_.point(v);
@@ -414,9 +418,12 @@ void classify_vertices(const Level_classifier<TriangleMesh>& classifier, std::si
   std::vector<Part> parts(chunks.size());
   for_each_chunk<ConcurrencyTag>(chunks, [&](std::size_t c, std::size_t b, std::size_t e) {
     Part& part = parts[c];
+    // A copy local to the pass: the stores into keys and distances cannot alias its constants
+    // (the lights), which then stay in registers.
+    const Level_classifier<TriangleMesh> local_classifier = classifier;
     for (std::size_t v = b; v < e; ++v) {
       typename Level_classifier<TriangleMesh>::Common_case common;
-      if (classifier.classify_common_case(int(v), facing_side_only, common)) {
+      if (local_classifier.classify_common_case(int(v), facing_side_only, common)) {
         // Strictly inside a band, or turned away: no vertex node, defined or not counted.
         if (levels != nullptr)
           (*levels)[v] = common.level();

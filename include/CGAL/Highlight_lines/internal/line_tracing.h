@@ -27,6 +27,11 @@ struct Traced_lines
   std::vector<Traced_line> lines;
   std::vector<int> degree;    // per node
   std::vector<int> new_order; // node ids in canonical order (old ids)
+  std::vector<int> new_id;    // its inverse: the canonical id of each node
+  // Work arrays, kept so that a sweep reuses the memory of the previous one.
+  std::vector<int> begin, fill, isolated;
+  std::vector<std::array<int, 2>> incident; // per node: its segments and their other ends
+  std::vector<char> used;
 };
 
 // Canonical order of nodes: by level, then lexicographically by position. Used to make the
@@ -55,39 +60,47 @@ inline void trace_lines(const std::vector<Raw_node>& nodes,
     ++out.degree[std::size_t(s[0])];
     ++out.degree[std::size_t(s[1])];
   }
-  std::vector<int> begin(n + 1, 0);
+  std::vector<int>& begin = out.begin;
+  begin.assign(n + 1, 0);
   for (std::size_t v = 0; v < n; ++v)
     begin[v + 1] = begin[v] + out.degree[v];
-  std::vector<int> incident(static_cast<std::size_t>(begin[n]));
+  // Per node, its segments with their other ends: a step of a walk reads the node's entries
+  // only, not the segment.
+  std::vector<std::array<int, 2>>& incident = out.incident;
+  incident.resize(static_cast<std::size_t>(begin[n]));
   {
-    std::vector<int> fill(begin.begin(), begin.end() - 1);
+    std::vector<int>& fill = out.fill;
+    fill.assign(begin.begin(), begin.end() - 1);
     for (std::size_t s = 0; s < segments.size(); ++s) {
-      incident[std::size_t(fill[std::size_t(segments[s][0])]++)] = int(s);
-      incident[std::size_t(fill[std::size_t(segments[s][1])]++)] = int(s);
+      const int a = segments[s][0], b = segments[s][1];
+      incident[std::size_t(fill[std::size_t(a)]++)] = {int(s), b};
+      incident[std::size_t(fill[std::size_t(b)]++)] = {int(s), a};
     }
   }
-  std::vector<char> used(segments.size(), 0);
-  auto other_end = [&](int s, int v) {
-    return segments[std::size_t(s)][0] == v ? segments[std::size_t(s)][1]
-                                            : segments[std::size_t(s)][0];
-  };
-  auto walk = [&](int start, int first_segment) {
+  std::vector<char>& used = out.used;
+  used.assign(segments.size(), 0);
+  auto degree_of = [&](int v) { return begin[std::size_t(v) + 1] - begin[std::size_t(v)]; };
+  // From node start along its entry `first`.
+  auto walk = [&](int start, const std::array<int, 2>& first) {
     Traced_line line;
     line.level = nodes[std::size_t(start)].level;
     line.nodes.push_back(start);
-    int s = first_segment, v = start;
+    int s = first[0], v = first[1];
+    const bool start_has_degree_2 = degree_of(start) == 2;
     for (;;) {
       used[std::size_t(s)] = 1;
-      v = other_end(s, v);
-      if (v == start && out.degree[std::size_t(v)] == 2) {
+      if (v == start && start_has_degree_2) {
         line.closed = true;
         break;
       }
       line.nodes.push_back(v);
-      if (out.degree[std::size_t(v)] != 2)
+      const int* range = &begin[std::size_t(v)];
+      if (range[1] - range[0] != 2)
         break;
-      const int* inc = &incident[std::size_t(begin[std::size_t(v)])];
-      s = inc[0] == s ? inc[1] : inc[0];
+      const std::array<int, 2>* inc = &incident[std::size_t(range[0])];
+      const std::array<int, 2>& next = inc[0][0] == s ? inc[1] : inc[0];
+      s = next[0];
+      v = next[1];
       if (used[std::size_t(s)])
         break;
     }
@@ -96,11 +109,11 @@ inline void trace_lines(const std::vector<Raw_node>& nodes,
   for (std::size_t v = 0; v < n; ++v)
     if (out.degree[v] != 2)
       for (int i = begin[v]; i < begin[v + 1]; ++i)
-        if (!used[std::size_t(incident[std::size_t(i)])])
+        if (!used[std::size_t(incident[std::size_t(i)][0])])
           walk(int(v), incident[std::size_t(i)]);
   for (std::size_t v = 0; v < n; ++v)
     for (int i = begin[v]; i < begin[v + 1]; ++i)
-      if (!used[std::size_t(incident[std::size_t(i)])])
+      if (!used[std::size_t(incident[std::size_t(i)][0])])
         walk(int(v), incident[std::size_t(i)]);
 
   auto less = [&](int a, int b) { return node_less(nodes[std::size_t(a)], nodes[std::size_t(b)]); };
@@ -130,7 +143,8 @@ inline void trace_lines(const std::vector<Raw_node>& nodes,
     return a.nodes.size() < b.nodes.size();
   });
 
-  std::vector<int> new_id(n, -1);
+  std::vector<int>& new_id = out.new_id;
+  new_id.assign(n, -1);
   out.new_order.clear();
   out.new_order.reserve(n);
   for (const Traced_line& line : out.lines)
@@ -139,7 +153,8 @@ inline void trace_lines(const std::vector<Raw_node>& nodes,
         new_id[std::size_t(v)] = int(out.new_order.size());
         out.new_order.push_back(v);
       }
-  std::vector<int> isolated;
+  std::vector<int>& isolated = out.isolated;
+  isolated.clear();
   for (std::size_t v = 0; v < n; ++v)
     if (new_id[v] < 0)
       isolated.push_back(int(v));

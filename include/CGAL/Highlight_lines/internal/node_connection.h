@@ -22,7 +22,7 @@ namespace internal {
 struct Highlight_segments
 {
   std::vector<std::array<int, 2>> segments; // node ids
-  std::size_t faces_across_poles = 0;       // faces where d is undefined or changes side
+  std::size_t faces_across_poles = 0;       // active faces where d is undefined or changes side
   std::size_t faces_with_capped_edges = 0;  // faces joining only the levels of the facing window
 };
 
@@ -35,9 +35,8 @@ struct Highlight_segments
 // inside faces come first, by face, then the highlight edges, by edge; with a parallel tag,
 // chunks of active faces are processed concurrently and their segments merged in that order.
 template <typename ConcurrencyTag, typename TriangleMesh>
-void connect_highlight_nodes(const Local_mesh<TriangleMesh>& lm, const std::vector<long long>& keys,
-                             const Highlight_nodes& hn, const Level_window& window,
-                             Highlight_segments& out)
+void connect_highlight_nodes(const Local_mesh<TriangleMesh>& lm, const Highlight_nodes& hn,
+                             const Level_window& window, Highlight_segments& out)
 {
   typedef std::vector<std::array<int, 2>> Segments;
   struct Part
@@ -57,9 +56,7 @@ void connect_highlight_nodes(const Local_mesh<TriangleMesh>& lm, const std::vect
     part.in_faces.clear();
     for (std::size_t i = b; i < e; ++i) {
       const Active_face& face = active[i];
-      const long long k[3] = {keys[std::size_t(face.vertices[0])],
-                              keys[std::size_t(face.vertices[1])],
-                              keys[std::size_t(face.vertices[2])]};
+      const std::array<long long, 3>& k = face.keys;
 
       // Highlight edges owned by this face: both ends on one level (equal, even keys).
       for (int j = 0; j < 3; ++j) {
