@@ -196,14 +196,21 @@ struct Table_row
               above_undented = 0, rank_sum = 0;
 };
 
+// Reads the shared mesh `name`; says so and returns false if it is missing.
+bool read_shared_mesh(const std::string& name, HB::Mesh& mesh)
+{
+  std::ifstream in(test::shared_data(name));
+  if (in && CGAL::IO::read_OFF(in, mesh))
+    return true;
+  std::cout << "\n" << name << ": not found, skipped\n";
+  return false;
+}
+
 void shared_table(const std::string& name, unsigned seeds)
 {
   HB::Mesh original;
-  std::ifstream in(test::shared_data(name));
-  if (!in || !CGAL::IO::read_OFF(in, original)) {
-    std::cout << "\n" << name << ": not found, skipped\n";
+  if (!read_shared_mesh(name, original))
     return;
-  }
   const auto lights = HL::default_light_setup(original, HLP::number_of_lines(30));
   HB::Peak_memory memory;
   auto start = std::chrono::steady_clock::now();
@@ -300,11 +307,8 @@ void shared_table(const std::string& name, unsigned seeds)
 void local_table(const std::string& name, unsigned seeds)
 {
   HB::Mesh original;
-  std::ifstream in(test::shared_data(name));
-  if (!in || !CGAL::IO::read_OFF(in, original)) {
-    std::cout << "\n" << name << ": not found, skipped\n";
+  if (!read_shared_mesh(name, original))
     return;
-  }
   const auto lights = HL::default_light_setup(original, HLP::number_of_lines(30));
   std::cout << "\n"
             << name << ", detection within 3R of each defect\n  h/ē   defects  seen  "
