@@ -3,7 +3,7 @@
 // same regions, moving the same vertices.
 //
 //   benchmark_real_dents [--table] [--seed N] [--centres N] [--repetitions N] [--mesh STEM]
-//                        [--dump DIR] [--jitter J]
+//                        [--dump DIR] [--jitter J] [--from-truth]
 //
 // The table mode is the only mode (`--table` is accepted and is the default): one Markdown
 // table per case, then two summary tables (one row per method): over all the cases, and over
@@ -37,14 +37,20 @@
 // of its corners' unit vertex normals). A line after the summaries gives the extremes over all
 // the cases.
 //
+// The floor: `--from-truth` runs every method on the undented mesh instead (same region, same
+// lights), measured against the same truth: how far each method moves a surface that has no
+// dent. A method that ends at its floor on the dented input has removed the whole dent; what
+// remains is the distance between the fair surface it settles on and the real surface.
+//
 // Methods, each on a fresh copy of the dented mesh:
 //   pmp_fair     CGAL::Polygon_mesh_processing::fair(mesh, movable vertices), default
 //                parameters (bi-Laplacian, cotangent weights; continuity 1)
 //   pmp_fair_c2  the same with fairing_continuity(2) (tri-Laplacian: curvature-continuous)
 //   xu_flow      surface_diffusion_flow.h with its default options (as benchmark_fairing.cpp)
-//   ours         CGAL::fair_with_highlight_lines(mesh, region, lights), default parameters
-//   ours_mc      the same with fairness_energy(Fairness_energy::MEAN_CURVATURE)
-//   ours_cv      the same with fairness_energy(Fairness_energy::CURVATURE_VARIATION)
+//   ours          CGAL::fair_with_highlight_lines(mesh, region, lights), default parameters
+//                 (the curvature variation energy)
+//   ours_mc       the same with fairness_energy(Fairness_energy::MEAN_CURVATURE)
+//   ours_willmore the same with fairness_energy(Fairness_energy::WILLMORE), the paper's
 // The movable vertices are HL::movable_vertices() of the region (fair_with_highlight_lines()'s
 // definition).
 //
@@ -99,10 +105,11 @@ enum Method {
   XU_FLOW,
   OURS,
   OURS_MEAN_CURVATURE,
-  OURS_CURVATURE_VARIATION,
+  OURS_WILLMORE,
   NUMBER_OF_METHODS
 };
-const char* method_names[] = {"pmp_fair", "pmp_fair_c2", "xu_flow", "ours", "ours_mc", "ours_cv"};
+const char* method_names[] = {"pmp_fair", "pmp_fair_c2", "xu_flow",
+                              "ours",     "ours_mc",     "ours_willmore"};
 
 struct Options
 {
@@ -111,6 +118,7 @@ struct Options
   int repetitions = 3;
   std::string only_mesh, dump_dir;
   double jitter = 0; // in ē_g
+  bool from_truth = false;
 };
 
 // One method (or the input / truth) on one case.
@@ -158,12 +166,13 @@ Run run_method(Method method, const HB::Real_dent_case& c,
     break;
   }
   default: {
-    const HL::Fairing_report r = CGAL::fair_with_highlight_lines(
-        mesh, c.region, c.lights,
-        HLP::fairness_energy(method == OURS ? HL::Fairness_energy::WILLMORE
-                             : method == OURS_MEAN_CURVATURE
-                                 ? HL::Fairness_energy::MEAN_CURVATURE
-                                 : HL::Fairness_energy::CURVATURE_VARIATION));
+    const HL::Fairing_report r =
+        method == OURS ? CGAL::fair_with_highlight_lines(mesh, c.region, c.lights)
+                       : CGAL::fair_with_highlight_lines(
+                             mesh, c.region, c.lights,
+                             HLP::fairness_energy(method == OURS_MEAN_CURVATURE
+                                                      ? HL::Fairness_energy::MEAN_CURVATURE
+                                                      : HL::Fairness_energy::WILLMORE));
     run.iterations = r.iterations;
     run.status = HL::to_string(r.status);
     run.converged = r.converged();
@@ -182,25 +191,26 @@ double median(std::vector<double> v)
   return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-// `folded`: the faces of the region folded in the dented input.
+// `folded`: the faces of the region folded in the dented input; `start`: the mesh the method
+// started from (flips and moves are counted against it).
 void measure(Outcome& o, const HB::Real_dent_case& c, const HB::Region_info<Mesh>& info,
              const std::vector<vertex_descriptor>& movable,
-             const std::vector<Mesh::Face_index>& folded, const Mesh& mesh)
+             const std::vector<Mesh::Face_index>& folded, const Mesh& mesh, const Mesh& start)
 {
   o.rms_depth = HB::rms_distance_to_surface(mesh, c.truth, info) / c.dent_depth;
   o.line_deviation =
       HB::deviation_from_reference(mesh, c.truth, info, c.lights).rms / c.mean_edge_length;
   o.willmore = HB::willmore_energy_in_region(mesh, info);
-  o.flips = HB::count_flipped_faces(mesh, c.input);
-  o.flips_of_folded = HB::count_flipped_faces(mesh, c.input, folded);
-  o.outside_moved = HB::count_moved_vertices_outside(mesh, c.input, movable);
+  o.flips = HB::count_flipped_faces(mesh, start);
+  o.flips_of_folded = HB::count_flipped_faces(mesh, start, folded);
+  o.outside_moved = HB::count_moved_vertices_outside(mesh, start, movable);
 }
 
 // Runs `method` `repetitions` times on fresh copies of the dented mesh (stopping at the first
 // failure) and measures the last result.
 Outcome evaluate(Method method, const HB::Real_dent_case& c, const HB::Region_info<Mesh>& info,
                  const std::vector<vertex_descriptor>& movable, const std::string& movable_error,
-                 const std::vector<Mesh::Face_index>& folded, int repetitions)
+                 const std::vector<Mesh::Face_index>& folded, int repetitions, bool from_truth)
 {
   Outcome o;
   if ((method == PMP_FAIR || method == PMP_FAIR_C2) && !movable_error.empty()) {
@@ -211,7 +221,7 @@ Outcome evaluate(Method method, const HB::Real_dent_case& c, const HB::Region_in
   Mesh result;
   Run run;
   for (int rep = 0; rep < repetitions; ++rep) {
-    Mesh mesh = c.input;
+    Mesh mesh = from_truth ? c.truth : c.input;
     try {
       const auto start = std::chrono::steady_clock::now();
       run = run_method(method, c, movable, mesh);
@@ -243,7 +253,7 @@ Outcome evaluate(Method method, const HB::Real_dent_case& c, const HB::Region_in
   if (!o.produced)
     return o;
   o.seconds = median(times);
-  measure(o, c, info, movable, folded, result);
+  measure(o, c, info, movable, folded, result, from_truth ? c.truth : c.input);
   return o;
 }
 
@@ -392,7 +402,7 @@ void print_summary(std::ostream& out, const char* patches,
          "rms > input |\n"
       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const char* name :
-       {"input", "pmp_fair", "pmp_fair_c2", "xu_flow", "ours", "ours_mc", "ours_cv"}) {
+       {"input", "pmp_fair", "pmp_fair_c2", "xu_flow", "ours", "ours_mc", "ours_willmore"}) {
     auto it = summaries.find(name);
     if (it == summaries.end())
       continue;
@@ -468,9 +478,11 @@ bool parse(int argc, char** argv, Options& options)
       options.dump_dir = value();
     else if (a == "--jitter")
       options.jitter = std::stod(value());
+    else if (a == "--from-truth")
+      options.from_truth = true;
     else {
       std::cerr << "usage: benchmark_real_dents [--table] [--seed N] [--centres N] "
-                   "[--repetitions N] [--mesh STEM] [--dump DIR] [--jitter J]\n";
+                   "[--repetitions N] [--mesh STEM] [--dump DIR] [--jitter J] [--from-truth]\n";
       return false;
     }
   }
@@ -557,12 +569,12 @@ int main(int argc, char** argv)
       }
       Outcome input, truth;
       input.produced = truth.produced = true;
-      measure(input, c, info, movable, quality.folded, c.input);
-      measure(truth, c, info, movable, quality.folded, c.truth);
+      measure(input, c, info, movable, quality.folded, c.input, c.input);
+      measure(truth, c, info, movable, quality.folded, c.truth, c.truth);
       std::vector<Outcome> outcomes;
       for (int m = 0; m < NUMBER_OF_METHODS; ++m)
         outcomes.push_back(evaluate(Method(m), c, info, movable, movable_error, quality.folded,
-                                    options.repetitions));
+                                    options.repetitions, options.from_truth));
       const Outcome& pmp = outcomes[PMP_FAIR];
       for (Outcome& o : outcomes)
         if (o.produced && pmp.produced && pmp.seconds > 0)

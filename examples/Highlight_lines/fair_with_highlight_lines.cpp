@@ -68,11 +68,13 @@ const char* usage =
     "  --normal X Y Z        the normal Z of the light plane  } a light tunnel above the mesh,\n"
     "  --spacing S           the distance between lights      } spacing from --lines)\n"
     "  --iterations N        iteration bound (default 50)\n"
+    "  --curvature-variation fair with the variation of the mean curvature, the default\n"
+    "                        (continues the surface's curvature across the region's border:\n"
+    "                        the closest repair of scanned and CAD surfaces)\n"
+    "  --willmore            fair with the Willmore energy of the paper (continues only the\n"
+    "                        tangent planes)\n"
     "  --mean-curvature      fair with the mean curvature energy (the normal part of the\n"
     "                        Willmore energy; for meshes with slivers or folded triangles)\n"
-    "  --curvature-variation fair with the variation of the mean curvature (continues the\n"
-    "                        surface's curvature across the region's border: the closest\n"
-    "                        repair of scanned and CAD surfaces)\n"
     "  --detect              automatic mode: find the irregular regions of the whole mesh\n"
     "                        (CGAL::detect_and_fair_highlight_line_irregularities), fair each,\n"
     "                        and write PREFIX_regions.png (before / after, regions tinted: red\n"
@@ -103,7 +105,7 @@ struct Options
   std::string region_file;
   int lines = 12, iterations = 50, width = 800, height = 600;
   bool detect = false, show_irregularities = false;
-  HL::Fairness_energy energy = HL::Fairness_energy::WILLMORE;
+  HL::Fairness_energy energy = HL::Fairness_energy::CURVATURE_VARIATION;
   std::size_t max_regions = std::size_t(-1);
   double min_confidence = 0.5;
 };
@@ -146,6 +148,8 @@ Options parse(int argc, char** argv)
       o.show_irregularities = true;
     else if (a == "--mean-curvature")
       o.energy = HL::Fairness_energy::MEAN_CURVATURE;
+    else if (a == "--willmore")
+      o.energy = HL::Fairness_energy::WILLMORE;
     else if (a == "--curvature-variation")
       o.energy = HL::Fairness_energy::CURVATURE_VARIATION;
     else if (a == "--min-confidence") {

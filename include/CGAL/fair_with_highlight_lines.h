@@ -186,10 +186,12 @@ less than `10^-3` of itself per step), or after the iteration bound.
   (`a0 <= 0` or `a1 <= 0`), a two-segment curve is used, and if that fails too the part gets
   no target (counted in the report). Lines that end inside the region, and loops inside it,
   get no target.
-- *q_fair* is the discrete Willmore energy of the region with the standard cotangent formula
-  `K = 1/(2A) Σ (cot α + cot β)(V_i − V_j)` (eq. 8 as printed lacks the factor 1/2), weights
-  held fixed during an iteration (or, with `fairness_energy`, its normal part or the variation of
-  the mean curvature: see `Highlight_lines::Fairness_energy`). *q_diff* is eq. 10–14 in
+- *q_fair* is, by default, the variation of the mean curvature over the region (beyond the
+  paper: its minimisers continue the surrounding curvature across the region, and end closest
+  to the surface that should be there); with `fairness_energy`, the paper's discrete Willmore
+  energy with the standard cotangent formula `K = 1/(2A) Σ (cot α + cot β)(V_i − V_j)` (eq. 8 as
+  printed lacks the factor 1/2), or its normal part (see `Highlight_lines::Fairness_energy`).
+  Weights and areas are held fixed during an iteration. *q_diff* is eq. 10–14 in
 Gauss–Newton form, divided by `area(R)^{3/2}` so that the result commutes with uniform scaling of
 mesh and lights.
 
@@ -228,9 +230,9 @@ mesh and lights.
       \cgalParamDefault{`1`}
     \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::fairness_energy}
-      \cgalParamDescription{the fairness term: the Willmore energy of the paper, its normal part (the squared mean curvature), which slivers and folded triangles do not dominate, or the variation of the mean curvature (curvature-continuous; the closest repair of real surfaces)}
+      \cgalParamDescription{the fairness term: the variation of the mean curvature (curvature-continuous; the closest repair of real surfaces), the Willmore energy of the paper, or its normal part (the squared mean curvature), which slivers and folded triangles do not dominate}
       \cgalParamType{`Highlight_lines::Fairness_energy`}
-      \cgalParamDefault{`Highlight_lines::Fairness_energy::WILLMORE`}
+      \cgalParamDefault{`Highlight_lines::Fairness_energy::CURVATURE_VARIATION`}
     \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::convergence_threshold}
       \cgalParamDescription{ε of eq. 17: the fairing has converged when the largest displacement of an iteration is below ε times the mean edge length of the region}
@@ -306,7 +308,7 @@ fair_with_highlight_lines(TriangleMesh& tm, const FaceRange& region,
   options.difference_weight =
       choose_parameter(get_parameter(np, HL::internal_np::difference_weight), 1.0);
   options.fairness_energy = choose_parameter(get_parameter(np, HL::internal_np::fairness_energy),
-                                             HL::Fairness_energy::WILLMORE);
+                                             HL::Fairness_energy::CURVATURE_VARIATION);
   options.convergence_threshold =
       choose_parameter(get_parameter(np, HL::internal_np::convergence_threshold), 0.001);
   const auto iterations =

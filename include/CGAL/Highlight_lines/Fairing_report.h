@@ -39,7 +39,8 @@ struct Fairing_report
   /// the step it took.
   struct Iteration
   {
-    /// `q_fair`: the discrete Willmore energy of the region (eq. 6, standard cotangent formula).
+    /// `q_fair`: the fairness energy of the region chosen with `fairness_energy` (by default the
+    /// variation of the mean curvature; the paper's is the discrete Willmore energy, eq. 6).
     double fairness_energy = 0;
     /// `q_diff`: the distance of the highlight lines to their desired OGH curves (eq. 10–14),
     /// divided by the cube of the region's length scale `sqrt(area(R))`.

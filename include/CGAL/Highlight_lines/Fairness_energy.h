@@ -16,8 +16,10 @@ mean curvature normal \f$ K_i = \frac{1}{2A_i} \sum_j (\cot\alpha_{ij} + \cot\be
 (V_i - V_j) \f$ with the weights and areas frozen in each iteration.
 */
 enum class Fairness_energy {
-  /// \f$ \sum_i A_i \|K_i\|^2 \f$, the discrete Willmore energy of the paper (eq. 6–8). The
-  /// default.
+  /// \f$ \sum_i A_i \|K_i\|^2 \f$, the discrete Willmore energy of the paper (eq. 6–8). Its
+  /// minimisers continue only the tangent planes of the surroundings: on dents pressed into
+  /// real meshes they end further from the undented surface than `Polygon_mesh_processing::fair()`
+  /// (see the manual's section on real dents).
   WILLMORE,
   /// \f$ \sum_i A_i (K_i \cdot N_i)^2 \f$, its normal part (the squared mean curvature). Equal
   /// to `WILLMORE` on well-shaped triangles; on slivers and folded triangles the tangential
@@ -32,8 +34,7 @@ enum class Fairness_energy {
   /// where the Willmore energy continues only its tangent planes, so that the faired surface
   /// ends closer to the surface that should be there: on dents pressed into real meshes, the
   /// RMS distance to the undented surface is half that of `Polygon_mesh_processing::fair()`
-  /// and 0.38 times that of `WILLMORE` (see the manual's section on real dents). Recommended
-  /// for repairs; `WILLMORE` stays the default as the paper's energy.
+  /// and 0.38 times that of `WILLMORE` (see the manual's section on real dents). The default.
   CURVATURE_VARIATION
 };
 

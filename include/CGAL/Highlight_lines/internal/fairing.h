@@ -34,7 +34,7 @@ constexpr double tangent_reach_in_edges = 3;
 struct Fairing_options
 {
   double fairness_weight = 1, difference_weight = 1, convergence_threshold = 0.001;
-  Fairness_energy fairness_energy = Fairness_energy::WILLMORE;
+  Fairness_energy fairness_energy = Fairness_energy::CURVATURE_VARIATION;
   std::size_t max_iterations = 50;
   int neighborhood_rings = 3;
   Level_window window;
