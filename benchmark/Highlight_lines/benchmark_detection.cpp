@@ -15,6 +15,7 @@
 //   benchmark_detection --mesh NAME            one shared mesh
 //   benchmark_detection --local [--mesh NAME]  the detection near each defect only
 //                                              (face_range: the faces within 3R of it)
+//   benchmark_detection ... --local-residual   the same with HLP::local_residual(true)
 //
 // Speed: the detection (3 x 2 light setups) on the bundled beetle Loop-subdivided twice
 // (618,496 triangles), as a ratio to one compute_highlight_lines() on the same mesh measured
@@ -126,11 +127,15 @@ double hood(double x, double y)
   return 0.25 * (1 - 0.35 * x * x) - 0.12 * y * y + 0.05 * x * y;
 }
 
+// --local-residual: the detection with HLP::local_residual(true) (issue 16).
+bool local_residual = false;
+
 std::vector<HB::Irregularity> detect(const HB::Mesh& mesh)
 {
   std::vector<HB::Irregularity> found;
   CGAL::detect_highlight_line_irregularities(
-      mesh, HL::default_light_setup(mesh, HLP::number_of_lines(30)), std::back_inserter(found));
+      mesh, HL::default_light_setup(mesh, HLP::number_of_lines(30)), std::back_inserter(found),
+      HLP::local_residual(local_residual));
   return found;
 }
 
@@ -329,9 +334,9 @@ void local_table(const std::string& name, unsigned seeds)
         }
         std::vector<HB::Irregularity> dented, undented;
         CGAL::detect_highlight_line_irregularities(mesh, lights, std::back_inserter(dented),
-                                                   HLP::face_range(disc));
+                                                   HLP::local_residual(HLP::face_range(disc), local_residual));
         CGAL::detect_highlight_line_irregularities(original, lights, std::back_inserter(undented),
-                                                   HLP::face_range(disc));
+                                                   HLP::local_residual(HLP::face_range(disc), local_residual));
         ++defects;
         seen += HB::regions_of_defects(mesh, {d}, dented)[0] != std::size_t(-1);
         quiet += undented.empty();
@@ -425,6 +430,8 @@ int main(int argc, char** argv)
       meshes.assign(1, argv[++i]), curves_only = true, hood = false;
     else if (std::strcmp(argv[i], "--local") == 0) // the detection near each defect only
       local = true, curves_only = true, hood = false;
+    else if (std::strcmp(argv[i], "--local-residual") == 0) // HLP::local_residual(true)
+      local_residual = true;
     else if (std::strcmp(argv[i], "--seeds") == 0 && i + 1 < argc)
       seeds = unsigned(std::stoul(argv[++i]));
     else

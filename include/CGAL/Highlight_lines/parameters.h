@@ -36,6 +36,7 @@ enum region_margin_t { region_margin };
 enum maximum_incidence_angle_t { maximum_incidence_angle };
 enum minimum_confidence_t { minimum_confidence };
 enum all_sides_t { all_sides };
+enum local_residual_t { local_residual };
 // Internal, for the detection's sweeps: an edge over max_levels_per_edge is dropped with its
 // faces (the rule before the facing window, see internal::Level_window).
 enum drop_faces_over_cap_t { drop_faces_over_cap };
@@ -107,6 +108,7 @@ CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(region_margin_t, region_margin)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(maximum_incidence_angle_t, maximum_incidence_angle)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(minimum_confidence_t, minimum_confidence)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(all_sides_t, all_sides)
+CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(local_residual_t, local_residual)
 
 #undef CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER
 

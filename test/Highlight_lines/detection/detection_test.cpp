@@ -61,6 +61,16 @@ std::vector<HB::Irregularity> detect_from_above(const HB::Mesh& mesh)
   return found;
 }
 
+// The detection with the local residual (issue 16, opt-in); `all_sides` as given.
+std::vector<HB::Irregularity> detect_local_residual(const HB::Mesh& mesh, bool all_sides)
+{
+  std::vector<HB::Irregularity> found;
+  CGAL::detect_highlight_line_irregularities(
+      mesh, HL::default_light_setup(mesh, HLP::number_of_lines(30)), std::back_inserter(found),
+      HLP::local_residual(HLP::all_sides(all_sides), true));
+  return found;
+}
+
 // Recall and precision over seeds 1..8, four defects of radius 5 ē per hood.
 HB::Detection_score score_on_hoods(double height_in_edges)
 {
@@ -158,6 +168,76 @@ TEST(LineBending, RobustStatisticsIgnoreOutliersAndUnscoredSamples)
   EXPECT_EQ(stats.count, 6u);
   EXPECT_DOUBLE_EQ(stats.median, 3.5);
   EXPECT_NEAR(stats.deviation, 1.4826 * 1.5, 1e-12);
+}
+
+// The lateral residual (local_residual): zero on straight lines, tiny on a wide circle, a
+// peak at a sideways bump and nothing beyond the fit's reach, no fit across a break.
+TEST(LineResidual, VanishesOnSmoothLinesPeaksAtABumpAndStopsAtBreaks)
+{
+  HLI::Line_residual_scales scales;
+  scales.step = 0.05;
+  HLI::Line_residual straight, circle, bumped, kinked, kinked_unbroken;
+  HLI::compute_line_residual(sampled_curve(10, 137,
+                                           [](double s) {
+                                             return Vec3{0.3 * s, 0.4 * s, 1.0};
+                                           }),
+                             false, scales, straight);
+  std::size_t evaluated = 0;
+  for (std::size_t i = 0; i < straight.valid.size(); ++i)
+    if (straight.valid[i]) {
+      ++evaluated;
+      EXPECT_LT(HLI::vector3::norm(straight.residual[i]), 1e-12);
+    }
+  // gap + minimum_side - 1 = 8 samples at each end have too few on one side.
+  EXPECT_EQ(evaluated, straight.valid.size() - 16);
+
+  std::vector<Vec3> ring;
+  for (int i = 0; i < 4000; ++i)
+    ring.push_back({10 * std::cos(2 * M_PI * i / 4000), 10 * std::sin(2 * M_PI * i / 4000), 0});
+  HLI::compute_line_residual(ring, true, scales, circle);
+  ASSERT_FALSE(circle.valid.empty());
+  for (std::size_t i = 0; i < circle.valid.size(); ++i) {
+    EXPECT_TRUE(circle.valid[i]);
+    EXPECT_LT(HLI::vector3::norm(circle.residual[i]), 1e-5);
+  }
+
+  // A sideways bump of height 0.02 and half-width 0.4 around s = 5.
+  HLI::compute_line_residual(sampled_curve(10, 500,
+                                           [](double s) {
+                                             const double t = (s - 5) / 0.4;
+                                             return Vec3{s, t * t < 1 ? 0.02 * std::pow(1 - t * t, 3) : 0.0, 0};
+                                           }),
+                             false, scales, bumped);
+  std::size_t peak = 0;
+  for (std::size_t i = 0; i < bumped.valid.size(); ++i)
+    if (bumped.valid[i] &&
+        HLI::vector3::norm(bumped.residual[i]) > HLI::vector3::norm(bumped.residual[peak]))
+      peak = i;
+  EXPECT_NEAR(0.05 * double(peak), 5.0, 0.1);
+  EXPECT_GT(HLI::vector3::norm(bumped.residual[peak]), 0.005);
+  for (std::size_t i = 0; i < bumped.valid.size(); ++i)
+    if (bumped.valid[i] && std::abs(0.05 * double(i) - 5) > 0.4 + 0.05 * scales.reach + 1e-9) {
+      EXPECT_LT(HLI::vector3::norm(bumped.residual[i]), 1e-12);
+    }
+
+  // Two straight pieces meeting at a kink at s = 5, the kink's node marked as a break.
+  std::vector<Vec3> kink = sampled_curve(10, 200, [](double s) {
+    return s < 5 ? Vec3{s, 0, 0} : Vec3{5 + 0.8 * (s - 5), 0.6 * (s - 5), 0};
+  });
+  std::vector<char> breaks(kink.size(), 0);
+  breaks[100] = 1;
+  HLI::compute_line_residual(kink, false, scales, kinked, breaks);
+  HLI::compute_line_residual(kink, false, scales, kinked_unbroken);
+  double largest = 0, largest_unbroken = 0;
+  for (std::size_t i = 0; i < kinked.valid.size(); ++i) {
+    if (kinked.valid[i])
+      largest = (std::max)(largest, HLI::vector3::norm(kinked.residual[i]));
+    if (kinked_unbroken.valid[i])
+      largest_unbroken =
+          (std::max)(largest_unbroken, HLI::vector3::norm(kinked_unbroken.residual[i]));
+  }
+  EXPECT_LT(largest, 1e-9);
+  EXPECT_GT(largest_unbroken, 0.05);
 }
 
 // --- Grouping ------------------------------------------------------------------------------
@@ -297,7 +377,8 @@ TEST(Detection, RegionsNeverCrossASharpEdge)
         },
         3);
     ASSERT_FALSE(defects.empty());
-    // The vertices of the crease: a region may reach them, never the other side.
+    // The vertices of the crease: a region may reach them, never the other side; with either
+    // measure.
     for (const auto& r : detect(mesh)) {
       bool left = false, right = false;
       for (auto f : r.faces)
@@ -306,6 +387,15 @@ TEST(Detection, RegionsNeverCrossASharpEdge)
           right = right || mesh.point(v).x() > 0.1 + 0.5 * e;
         }
       EXPECT_FALSE(left && right) << "seed " << seed << ": " << HB::describe(r);
+    }
+    for (const auto& r : detect_local_residual(mesh, true)) {
+      bool left = false, right = false;
+      for (auto f : r.faces)
+        for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh)) {
+          left = left || mesh.point(v).x() < 0.1 - 0.5 * e;
+          right = right || mesh.point(v).x() > 0.1 + 0.5 * e;
+        }
+      EXPECT_FALSE(left && right) << "local residual, seed " << seed << ": " << HB::describe(r);
     }
   }
 }
@@ -415,6 +505,66 @@ TEST(Detection, FindsMostSmallDefectsAnywhereOnSharedCadMeshes)
     EXPECT_EQ(total.defects, 8u) << name;
     EXPECT_GE(total.recall(), 0.6) << name;
   }
+}
+
+// --- The local residual (opt-in, issue 16) --------------------------------------------------
+
+// On the smooth hoods (seeds 1..8, 4 defects each, from above) the local residual locates
+// (HB::located_defects: the region holding the defect lies within 3R of it) 30 of 32 defects
+// 0.05 ē high and 29 of 32 0.02 ē high, and next to nothing else (measured).
+TEST(LocalResidual, LocatesSmallDefectsOnHoodsAndNothingElse)
+{
+  for (double h : {0.05, 0.02, 0.0}) {
+    std::size_t defects = 0, located = 0, regions = 0, true_regions = 0;
+    for (unsigned seed = 1; seed <= 8; ++seed) {
+      HB::Mesh mesh = smooth_hood(seed);
+      std::vector<HB::Injected_defect> injected;
+      if (h > 0)
+        injected = HB::inject_defects(mesh, 4, 5.0, h, seed, [](auto) { return true; });
+      const auto found = detect_local_residual(mesh, false);
+      const HB::Detection_score s = HB::match(mesh, injected, found);
+      defects += s.defects;
+      regions += s.regions;
+      true_regions += s.true_regions;
+      for (bool l : HB::located_defects(mesh, injected, found))
+        located += l;
+    }
+    if (h > 0) {
+      EXPECT_EQ(defects, 32u);
+      EXPECT_GE(double(located) / double(defects), h > 0.03 ? 0.9 : 0.85) << h;
+    }
+    // At most one region of 30 holds no defect (measured: 33 of 33, 29 of 30, none).
+    EXPECT_LE(regions - true_regions, h > 0 ? 1u : 0u) << h;
+  }
+}
+
+// Regions sized to the defect: every vertex of a region within 2w + margin of its centre (and
+// the other corners of its faces one edge further), the centre within 2w of the peak (w = 3 ē,
+// margin 2 ē: 14 ē plus an edge), on a shared scan with defects 0.2 ē high, where the clusters
+// of the bending measure cover much of the mesh (benchmark_detection: 76 % of its vertices).
+TEST(LocalResidual, RegionsAreSizedToTheDefect)
+{
+  HB::Mesh mesh;
+  std::ifstream in(test::shared_data("rocker-arm.off"));
+  if (!in || !CGAL::IO::read_OFF(in, mesh))
+    GTEST_SKIP() << "shared mesh rocker-arm.off not found";
+  const auto defects = HB::inject_defects(mesh, 4, 5.0, 0.2, 1, [](auto) { return true; });
+  const double e = HB::mean_edge_length(mesh);
+  const auto found = detect_local_residual(mesh, true);
+  ASSERT_FALSE(found.empty());
+  for (const auto& r : found)
+    for (auto f : r.faces)
+      for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+        ASSERT_LT(std::sqrt(CGAL::squared_distance(mesh.point(v), mesh.point(r.peak_vertex))),
+                  16 * e)
+            << HB::describe(r);
+  // And it locates the defects there (the bending measure: none of 8 at 0.2 ē in
+  // benchmark_detection, seeds 1-2).
+  std::size_t located = 0;
+  for (bool l : HB::located_defects(mesh, defects, found))
+    located += l;
+  std::cout << "rocker-arm, seed 1, 0.2 ē: located " << located << " of " << defects.size() << "\n";
+  EXPECT_GE(located, 1u);
 }
 
 // --- Invariances --------------------------------------------------------------------------

@@ -8,9 +8,13 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <queue>
+#include <unordered_map>
 #include <set>
 #include <utility>
 #include <vector>
+
+#include <CGAL/Highlight_lines/internal/vector3.h>
 
 namespace CGAL {
 namespace Highlight_lines {
@@ -24,6 +28,7 @@ struct Anomaly
   std::size_t setup = 0; // which light setup
   double score = 0;      // robust z-score of the bending on its line
   double bending = 0;    // radians
+  double noise = -1;     // the robust deviation of the residuals of its line, if known
 };
 
 struct Anomaly_region
@@ -185,6 +190,209 @@ inline std::vector<Anomaly_region> group_anomalies(const std::vector<std::array<
 {
   return group_anomalies(faces, number_of_vertices, anomalies, join_rings, margin_rings,
                          std::vector<std::size_t>(std::size_t(number_of_vertices), minimum_setups));
+}
+
+// A region around a peak of the anomalies (group_anomalies_around_peaks()).
+struct Peak_region
+{
+  std::vector<int> faces;
+  std::vector<std::size_t> anomalies; // in the disc around the centre: indices into the list
+  std::vector<std::size_t> neighbourhood; // all anomalies within `neighbourhood_radius`
+  int centre = -1;                        // vertex
+  std::size_t setups = 0;                 // distinct setups among `anomalies`
+  double strength = 0; // the sum over those setups of their strongest anomaly's score
+};
+
+// Groups anomalies into disjoint regions around their peaks, strongest first (non-maximum
+// suppression), so that no region grows along a feature or chains over the mesh:
+// 1. the evidence of a disc of radius `radius` around an anomaly is the number of distinct
+//    light setups among the unclaimed anomalies in it (ties: the sum over those setups of
+//    their strongest score);
+// 2. repeatedly, the disc of most evidence is re-centred on the mean of its anomalies (at the
+//    vertex of one of them nearest to it); if its anomalies show in at least
+//    `minimum_setups[centre]` setups it becomes a region and claims them, else it is dropped;
+// 3. a region's faces are those with a vertex within `radius + margin` (Euclidean) of the
+//    centre, reached from it along edges that pass no `barrier` vertex (they are reached, not
+//    crossed) nor a vertex of an earlier region.
+// `neighbourhood` lists every anomaly (claimed or not) within `neighbourhood_radius` of the
+// centre: what the surroundings show, to tell a local defect from a feature.
+inline std::vector<Peak_region> group_anomalies_around_peaks(
+    const std::vector<std::array<int, 3>>& faces, const std::vector<vector3::Vec3>& points,
+    const std::vector<Anomaly>& anomalies, double radius, double margin,
+    double neighbourhood_radius, double separation, const std::vector<std::size_t>& minimum_setups,
+    const std::vector<char>& barrier = {})
+{
+  using namespace vector3;
+  const int nv = int(points.size());
+  std::vector<Peak_region> regions;
+  if (anomalies.empty() || !(radius > 0))
+    return regions;
+  // A uniform grid of cells of side `radius` over the anomalies.
+  const double cell = radius;
+  struct Key_hash
+  {
+    std::size_t operator()(const std::array<long long, 3>& k) const
+    {
+      return std::size_t(k[0] * 73856093LL ^ k[1] * 19349663LL ^ k[2] * 83492791LL);
+    }
+  };
+  auto key_of = [cell](const Vec3& p) {
+    return std::array<long long, 3>{(long long)std::floor(p[0] / cell),
+                                    (long long)std::floor(p[1] / cell),
+                                    (long long)std::floor(p[2] / cell)};
+  };
+  std::unordered_map<std::array<long long, 3>, std::vector<std::size_t>, Key_hash> grid;
+  for (std::size_t i = 0; i < anomalies.size(); ++i)
+    grid[key_of(points[std::size_t(anomalies[i].vertex)])].push_back(i);
+  auto within = [&](const Vec3& c, double r, auto&& f) {
+    const long long reach = (long long)std::ceil(r / cell);
+    const auto k = key_of(c);
+    for (long long x = -reach; x <= reach; ++x)
+      for (long long y = -reach; y <= reach; ++y)
+        for (long long z = -reach; z <= reach; ++z) {
+          const auto it = grid.find({k[0] + x, k[1] + y, k[2] + z});
+          if (it == grid.end())
+            continue;
+          for (std::size_t i : it->second) {
+            const Vec3 d = points[std::size_t(anomalies[i].vertex)] - c;
+            if (dot(d, d) <= r * r)
+              f(i);
+          }
+        }
+  };
+  std::vector<char> claimed(anomalies.size(), 0);
+  struct Evidence
+  {
+    std::size_t setups = 0;
+    double strength = 0;
+    bool operator<(const Evidence& o) const
+    {
+      return setups != o.setups ? setups < o.setups : strength < o.strength;
+    }
+  };
+  std::vector<std::pair<std::size_t, double>> best_of_setup; // (setup, score), reused
+  auto evidence = [&](const Vec3& c, std::vector<std::size_t>* members) {
+    best_of_setup.clear();
+    if (members)
+      members->clear();
+    within(c, radius, [&](std::size_t i) {
+      if (claimed[i])
+        return;
+      if (members)
+        members->push_back(i);
+      best_of_setup.emplace_back(anomalies[i].setup, anomalies[i].score);
+    });
+    std::sort(best_of_setup.begin(), best_of_setup.end());
+    Evidence e;
+    for (std::size_t j = 0; j < best_of_setup.size(); ++j)
+      if (j + 1 == best_of_setup.size() || best_of_setup[j + 1].first != best_of_setup[j].first) {
+        ++e.setups;
+        e.strength += best_of_setup[j].second;
+      }
+    return e;
+  };
+  // Lazy greedy: evidence only falls as anomalies are claimed.
+  typedef std::pair<Evidence, std::size_t> Entry;
+  auto lower = [](const Entry& a, const Entry& b) {
+    return a.first < b.first || (!(b.first < a.first) && a.second > b.second);
+  };
+  std::priority_queue<Entry, std::vector<Entry>, decltype(lower)> queue(lower);
+  for (std::size_t i = 0; i < anomalies.size(); ++i)
+    queue.push({evidence(points[std::size_t(anomalies[i].vertex)], nullptr), i});
+  const Vertex_adjacency adjacency(faces, nv);
+  std::vector<int> owner(std::size_t(nv), -1);
+  std::vector<std::size_t> members, recentred;
+  std::vector<int> front;
+  while (!queue.empty()) {
+    const Entry top = queue.top();
+    queue.pop();
+    if (claimed[top.second])
+      continue;
+    const Vec3 c = points[std::size_t(anomalies[top.second].vertex)];
+    const Evidence now = evidence(c, &members);
+    if (now.setups == 0)
+      continue;
+    if (now < top.first) {
+      queue.push({now, top.second});
+      continue;
+    }
+    // Re-centre on the mean of the disc's anomalies.
+    Vec3 mean{0, 0, 0};
+    for (std::size_t i : members)
+      mean = mean + (1.0 / double(members.size())) * points[std::size_t(anomalies[i].vertex)];
+    int centre = anomalies[top.second].vertex;
+    double nearest = 1e300;
+    for (std::size_t i : members) {
+      const Vec3 d = points[std::size_t(anomalies[i].vertex)] - mean;
+      if (dot(d, d) < nearest && owner[std::size_t(anomalies[i].vertex)] < 0) {
+        nearest = dot(d, d);
+        centre = anomalies[i].vertex;
+      }
+    }
+    if (owner[std::size_t(centre)] >= 0)
+      continue; // inside an earlier region: its anomalies are another region's surroundings
+    const Vec3 cc = points[std::size_t(centre)];
+    const Evidence final_evidence = evidence(cc, &recentred);
+    // Non-maximum suppression: no centre within `separation` of a region more than twice as
+    // strong (the fit around a defect leaves weaker side lobes beyond its disc).
+    bool suppressed = false;
+    for (const Peak_region& r : regions) {
+      const Vec3 d = points[std::size_t(r.centre)] - cc;
+      suppressed = suppressed || (dot(d, d) < separation * separation &&
+                                  2 * final_evidence.strength < r.strength);
+    }
+    if (suppressed)
+      continue;
+    if (final_evidence.setups < (std::max)(std::size_t(1), minimum_setups[std::size_t(centre)]))
+      continue; // not enough evidence: this candidate is dropped, its anomalies stay
+    Peak_region region;
+    region.centre = centre;
+    region.anomalies = recentred;
+    region.setups = final_evidence.setups;
+    region.strength = final_evidence.strength;
+    for (std::size_t i : recentred)
+      claimed[i] = 1;
+    within(cc, neighbourhood_radius, [&](std::size_t i) { region.neighbourhood.push_back(i); });
+    // The faces: a ball around the centre reaching the disc's anomalies, plus the margin.
+    double reach = radius;
+    for (std::size_t i : recentred)
+      reach = (std::max)(reach, norm(points[std::size_t(anomalies[i].vertex)] - cc));
+    reach += margin;
+    const int id = int(regions.size());
+    std::vector<int> inside;
+    front.assign(1, centre);
+    owner[std::size_t(centre)] = id;
+    inside.push_back(centre);
+    while (!front.empty()) {
+      const int v = front.back();
+      front.pop_back();
+      if (!barrier.empty() && barrier[std::size_t(v)] && v != centre)
+        continue;
+      adjacency.for_each_neighbour(v, [&](int w) {
+        if (owner[std::size_t(w)] >= 0)
+          return;
+        const Vec3 d = points[std::size_t(w)] - cc;
+        if (dot(d, d) > reach * reach)
+          return;
+        owner[std::size_t(w)] = id;
+        inside.push_back(w);
+        front.push_back(w);
+      });
+    }
+    regions.push_back(std::move(region));
+  }
+  // Faces: to the region of a vertex off the barrier if there is one.
+  auto on_barrier = [&](int v) { return !barrier.empty() && barrier[std::size_t(v)]; };
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    int chosen = -1;
+    for (int pass = 0; pass < 2 && chosen < 0; ++pass)
+      for (int v : faces[f])
+        if (chosen < 0 && owner[std::size_t(v)] >= 0 && (pass == 1 || !on_barrier(v)))
+          chosen = owner[std::size_t(v)];
+    if (chosen >= 0)
+      regions[std::size_t(chosen)].faces.push_back(int(f));
+  }
+  return regions;
 }
 
 // The square roots of the two largest eigenvalues of the symmetric 3 x 3 matrix `c` (a
