@@ -2,7 +2,11 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // Speed of Active_set_box_QP_solver on fairing-like problems, as a ratio to one unconstrained
-// Eigen::SimplicialLDLT factorisation + solve of the same matrix measured in the same run.
+// Eigen::SimplicialLDLT factorisation + solve of the same matrix measured in the same run
+// (BM_box_QP), and as a ratio to ONE of the solver's own supernodal factorisations of the
+// same matrix, on programs whose active bounds form smooth regions or are scattered as in
+// Moré and Toraldo's GPCG test problems (BM_box_QP_vs_factorization, described below; run it
+// alone with --benchmark_filter=vs_factorization, about 5 minutes).
 //
 // The problem: the cotangent bi-Laplacian  W^T M^-1 W  of the interior vertices of an
 // irregular Delaunay disk patch (random points whose density varies across the disk, the
@@ -39,6 +43,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -59,6 +64,15 @@ using Solver = CGAL::Highlight_lines::Active_set_box_QP_solver;
 double seconds_since(std::chrono::steady_clock::time_point start)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The CPU time of this thread: the solver and the factorisation are serial, and on a shared
+// machine their ratio in wall time varies with the load of the other cores.
+double thread_seconds()
+{
+  timespec now;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return double(now.tv_sec) + 1e-9 * double(now.tv_nsec);
 }
 
 // The matrix and bounds of a fairing QP on a disk patch with n interior vertices.
@@ -329,9 +343,208 @@ void cases(benchmark::internal::Benchmark* benchmark)
         benchmark->Args({n, active_percent, start});
 }
 
+// ---------------------------------------------------------------------------------------------
+// BM_box_QP_vs_factorization: the solve time as a ratio to ONE numeric supernodal LDL^T
+// factorisation of the same matrix (the solver's own, internal::Supernodal_LDLT, on the
+// whole P), both timed in every repetition of the case, in CPU time of the thread (both are
+// serial); the counters are medians over the repetitions, and ratio_without_analysis leaves
+// out the symbolic analysis (AMD ordering, supernodes) that a cold solve includes. Two kinds of program on the same fairing-like matrix, 20 % of the bounds
+// active at the optimum:
+//   kind 0, smooth    -- the active bounds form smooth regions (the clamped smooth field of
+//                        Known_solution_problem);
+//   kind 1, scattered -- the active bounds are scattered at random, as in the test problems
+//                        of Moré and Toraldo's GPCG: a random 20 % of the variables on a
+//                        random side, random multipliers, random free values inside the box.
+// start 0, cold: a new solver (its time includes the symbolic analysis, reported apart as
+// analysis_ms); start 1, warm: a copy of the solver that solved a nearby program (the one
+// a fairing iteration reuses: symbolic analysis and last factorisation kept), warm-started
+// from that program's solution (warm_start_differs_percent of the active bounds differ);
+// start 2, warm_new: a new solver warm-started from the same point (no factorisation at
+// hand: analysis included, as cold).
+
+// A program whose active bounds are scattered at random. `redraw` is the fraction of
+// variables whose draw is replaced by another one (a nearby program).
+struct Scattered_problem
+{
+  Eigen::VectorXd c, solution;
+  std::size_t active = 0;
+
+  Scattered_problem(const Fairing_like_patch& patch, double active_fraction, double redraw)
+  {
+    const Eigen::Index n = patch.bound.size();
+    std::mt19937 random(777u), other(778u), choice(779u);
+    std::uniform_real_distribution<double> uniform(0., 1.);
+    const Eigen::VectorXd diagonal = patch.Q.diagonal();
+    solution.resize(n);
+    Eigen::VectorXd gradient = Eigen::VectorXd::Zero(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      double draw[4];
+      for (double& d : draw)
+        d = uniform(random);
+      double alternative[4];
+      for (double& d : alternative)
+        d = uniform(other);
+      if (uniform(choice) < redraw)
+        std::copy(alternative, alternative + 4, draw);
+      const double b = patch.bound[i];
+      if (draw[0] < active_fraction) {
+        ++active;
+        const double side = draw[1] < 0.5 ? -1. : 1.;
+        solution[i] = side * b;
+        const double multiplier = diagonal[i] * b * (0.01 + draw[2]);
+        gradient[i] = -side * multiplier;
+      } else
+        solution[i] = b * (1.9 * draw[3] - 0.95);
+    }
+    c = gradient - patch.Q * solution;
+  }
+};
+
+enum Kind { SMOOTH, SCATTERED };
+
+struct Ratio_case_data
+{
+  Fairing_like_patch patch;
+  Eigen::VectorXd c, solution, nearby_c, nearby_solution_exact;
+  std::size_t active = 0;
+  std::vector<double> nearby_solution;
+  Solver nearby_solver; // solved the nearby program
+  CGAL::Highlight_lines::internal::Supernodal_LDLT ldlt;
+  double analysis_seconds = 0.;
+
+  Ratio_case_data(int n, Kind kind) : patch(n)
+  {
+    const double fraction = 0.2;
+    if (kind == SMOOTH) {
+      const Known_solution_problem problem(patch, fraction, 1.015, 0.01), nearby(patch, fraction, 1., 0.);
+      c = problem.c;
+      solution = problem.solution;
+      active = problem.active;
+      nearby_c = nearby.c;
+      nearby_solution_exact = nearby.solution;
+    } else {
+      const Scattered_problem problem(patch, fraction, 0.), nearby(patch, fraction, 0.05);
+      c = problem.c;
+      solution = problem.solution;
+      active = problem.active;
+      nearby_c = nearby.c;
+      nearby_solution_exact = nearby.solution;
+    }
+    set(nearby_solver, nearby_c);
+    nearby_solver.solve(std::back_inserter(nearby_solution));
+    // The symbolic analysis, as the solver does it (AMD on the whole pattern).
+    const double begin = thread_seconds();
+    Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> permutation;
+    Sparse_matrix pattern = patch.Q;
+    Eigen::internal::minimum_degree_ordering(pattern, permutation);
+    const std::vector<int> ordering(permutation.indices().data(),
+                                    permutation.indices().data() + n);
+    ldlt.analyze(n, patch.Q.outerIndexPtr(), patch.Q.innerIndexPtr(), ordering);
+    analysis_seconds = thread_seconds() - begin;
+  }
+
+  void set(Solver& solver, const Eigen::VectorXd& linear) const
+  {
+    const std::size_t n = static_cast<std::size_t>(patch.bound.size());
+    solver.resize(n);
+    solver.set_P(patch.Q);
+    for (std::size_t i = 0; i < n; ++i) {
+      solver.set_q(i, linear[i]);
+      solver.set_l(i, -patch.bound[i]);
+      solver.set_u(i, patch.bound[i]);
+    }
+  }
+};
+
+Ratio_case_data& ratio_case_data(int n, Kind kind)
+{
+  static std::map<std::pair<int, int>, std::unique_ptr<Ratio_case_data>> cache;
+  auto& slot = cache[{n, int(kind)}];
+  if (!slot)
+    slot = std::make_unique<Ratio_case_data>(n, kind);
+  return *slot;
+}
+
+double median(std::vector<double> v)
+{
+  std::sort(v.begin(), v.end());
+  const std::size_t m = v.size() / 2;
+  return v.size() % 2 == 1 ? v[m] : 0.5 * (v[m - 1] + v[m]);
+}
+
+void BM_box_QP_vs_factorization(benchmark::State& state)
+{
+  const int n = static_cast<int>(state.range(0));
+  const Kind kind = static_cast<Kind>(state.range(1));
+  const bool warm = state.range(2) != 0, reused = state.range(2) == 1;
+  Ratio_case_data& data = ratio_case_data(n, kind);
+
+  std::vector<double> solve_times, factorization_times;
+  CGAL::Highlight_lines::Box_QP_report report;
+  std::vector<double> x;
+  for (auto _ : state) {
+    double begin = thread_seconds();
+    const auto inertia = data.ldlt.factorize(data.patch.Q.valuePtr(), 1e-12);
+    benchmark::DoNotOptimize(inertia);
+    factorization_times.push_back(thread_seconds() - begin);
+
+    Solver used = reused ? data.nearby_solver : Solver(); // untimed copy
+    begin = thread_seconds();
+    data.set(used, data.c);
+    if (warm)
+      used.set_warm_start(data.nearby_solution);
+    x.clear();
+    report = used.solve(std::back_inserter(x));
+    const double elapsed = thread_seconds() - begin;
+    solve_times.push_back(elapsed);
+    state.SetIterationTime(elapsed);
+    if (!report.is_optimal())
+      state.SkipWithError(report.message.c_str());
+  }
+  double deviation = 0.;
+  for (Eigen::Index i = 0; i < data.solution.size(); ++i)
+    deviation = std::max(deviation, std::abs(x[i] - data.solution[i]));
+  const double solve_median = median(solve_times), factorization_median = median(factorization_times);
+  state.counters["ratio"] = solve_median / factorization_median;
+  state.counters["solve_ms"] = 1e3 * solve_median;
+  state.counters["factorization_ms"] = 1e3 * factorization_median;
+  state.counters["analysis_ms"] = 1e3 * data.analysis_seconds;
+  if (!reused)
+    state.counters["ratio_without_analysis"] =
+        (solve_median - data.analysis_seconds) / factorization_median;
+  state.counters["factorizations"] = static_cast<double>(report.factorizations);
+  state.counters["iterations"] = static_cast<double>(report.iterations);
+  state.counters["projection_steps"] = static_cast<double>(report.projection_steps);
+  state.counters["active_percent"] = 100. * double(report.active_bounds) / n;
+  state.counters["rel_KKT"] = report.relative_kkt_residual;
+  state.counters["deviation"] = deviation / data.patch.bound.maxCoeff();
+  if (warm) {
+    std::size_t differing = 0;
+    for (Eigen::Index i = 0; i < data.solution.size(); ++i)
+      differing += (std::abs(data.solution[i]) == data.patch.bound[i]) !=
+                   (std::abs(data.nearby_solution_exact[i]) == data.patch.bound[i]);
+    state.counters["warm_start_differs_percent"] = 100. * double(differing) / double(data.active);
+  }
+}
+
+void ratio_cases(benchmark::internal::Benchmark* benchmark)
+{
+  benchmark->ArgNames({"n", "kind", "start"});
+  for (int n : {10000, 100000})
+    for (int kind : {SMOOTH, SCATTERED})
+      for (int start : {0, 1, 2})
+        benchmark->Args({n, kind, start});
+}
+
 } // namespace
 
 // Three iterations per case keep the run at a few minutes; each one also runs the baseline.
 BENCHMARK(BM_box_QP)->Apply(cases)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(3);
+// Five repetitions per case (medians); run alone with --benchmark_filter=vs_factorization.
+BENCHMARK(BM_box_QP_vs_factorization)
+    ->Apply(ratio_cases)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(5);
 
 BENCHMARK_MAIN();

@@ -94,6 +94,10 @@ struct Box_QP_report
   std::size_t iterations = 0;
   /// the number of sparse matrix factorisations computed (0 if the solver does not say).
   std::size_t factorizations = 0;
+  /// the number of projected searches (steps along a projection arc onto the box) of a
+  /// gradient projection phase that looks for the active bounds before the active-set
+  /// iterations (0 if the solver has no such phase or skipped it).
+  std::size_t projection_steps = 0;
   /// \f$ \|\pi\|_\infty \f$, see above; NaN when no point was computed.
   double kkt_residual = std::numeric_limits<double>::quiet_NaN();
   /// `kkt_residual` divided by \f$ \|q\|_\infty + \|P\|_\infty \|x\|_\infty \f$, the size of

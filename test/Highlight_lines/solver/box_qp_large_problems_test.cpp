@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -279,6 +280,224 @@ TEST(BoxQPLargeProblems, MonotonePhaseAloneSolvesAFairingLikeProblem)
   Active_set_box_QP_solver solver;
   solver.set_maximum_number_of_primal_dual_iterations(0);
   expect_known_solution(grid, problem, solve(solver, grid, problem));
+}
+
+// ---------------------------------------------------------------------------------------------
+// The gradient projection phase (problems of 2000 variables or more): its result is the one
+// of the active-set path alone (set_gradient_projection(false)) and satisfies the KKT
+// conditions checked here, on scattered and smooth active sets and on degenerate bounds.
+
+// A linear term whose minimiser has a random `fraction` of the variables on a random bound
+// (multipliers of random size), the others at random values inside: the active bounds are
+// scattered, as in Moré and Toraldo's test problems.
+struct Scattered_solution
+{
+  Eigen::VectorXd c, x;
+  std::size_t active = 0;
+
+  Scattered_solution(const Grid_problem& grid, double fraction, unsigned seed)
+  {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> uniform(0., 1.);
+    const Eigen::VectorXd diagonal = grid.Q.diagonal();
+    x.resize(grid.n);
+    Eigen::VectorXd gradient = Eigen::VectorXd::Zero(grid.n);
+    for (int k = 0; k < grid.n; ++k) {
+      const double b = grid.bound[k];
+      if (uniform(random) < fraction) {
+        ++active;
+        const double side = uniform(random) < 0.5 ? -1. : 1.;
+        x[k] = side * b;
+        gradient[k] = -side * diagonal[k] * b * (0.01 + uniform(random));
+      } else
+        x[k] = b * (1.9 * uniform(random) - 0.95);
+    }
+    c = gradient - grid.Q * x;
+  }
+};
+
+// Solves min 1/2 x^T Q x + c^T x on [l, u] with a new solver, gradient projection on or off.
+Result solve_box(const Sparse_matrix& Q, const Eigen::VectorXd& c, const Eigen::VectorXd& l,
+                 const Eigen::VectorXd& u, bool gradient_projection,
+                 const std::vector<double>* warm_start = nullptr,
+                 Active_set_box_QP_solver* reused = nullptr)
+{
+  Active_set_box_QP_solver fresh;
+  Active_set_box_QP_solver& solver = reused != nullptr ? *reused : fresh;
+  solver.set_gradient_projection(gradient_projection);
+  const int n = static_cast<int>(c.size());
+  solver.resize(std::size_t(n));
+  solver.set_P(Q);
+  for (int k = 0; k < n; ++k) {
+    solver.set_q(std::size_t(k), c[k]);
+    solver.set_l(std::size_t(k), l[k]);
+    solver.set_u(std::size_t(k), u[k]);
+  }
+  if (warm_start != nullptr)
+    solver.set_warm_start(*warm_start);
+  Result result;
+  result.report = solver.solve(std::back_inserter(result.x));
+  return result;
+}
+
+// The relative KKT residual of x, computed here: projected gradient over the size of its terms.
+double box_kkt_residual(const Sparse_matrix& Q, const Eigen::VectorXd& c, const Eigen::VectorXd& l,
+                        const Eigen::VectorXd& u, const std::vector<double>& x)
+{
+  const Eigen::Map<const Eigen::VectorXd> point(x.data(), c.size());
+  const Eigen::VectorXd gradient = Q * point + c;
+  double residual = 0., Q_norm = 0.;
+  for (Eigen::Index k = 0; k < c.size(); ++k) {
+    double projected = gradient[k];
+    if (l[k] == u[k])
+      projected = 0.;
+    else if (x[k] <= l[k])
+      projected = std::min(projected, 0.);
+    else if (x[k] >= u[k])
+      projected = std::max(projected, 0.);
+    residual = std::max(residual, std::abs(projected));
+    Q_norm = std::max(Q_norm, Q.col(k).cwiseAbs().sum());
+  }
+  return residual / (c.cwiseAbs().maxCoeff() + Q_norm * point.cwiseAbs().maxCoeff());
+}
+
+// Both results optimal, within the bounds, satisfying the KKT conditions, and equal to the
+// tolerance (the solution is unique: Q is positive definite).
+void expect_same_optimum_both_ways(const Sparse_matrix& Q, const Eigen::VectorXd& c,
+                                   const Eigen::VectorXd& l, const Eigen::VectorXd& u,
+                                   const Result& with, const Result& without)
+{
+  for (const Result* result : {&with, &without}) {
+    ASSERT_EQ(result->report.status, Box_QP_status::OPTIMAL) << result->report.message;
+    ASSERT_EQ(result->x.size(), std::size_t(c.size()));
+    for (Eigen::Index k = 0; k < c.size(); ++k) {
+      ASSERT_GE(result->x[k], l[k]) << "variable " << k;
+      ASSERT_LE(result->x[k], u[k]) << "variable " << k;
+    }
+    EXPECT_LE(result->report.relative_kkt_residual, 1e-10);
+    EXPECT_LE(box_kkt_residual(Q, c, l, u, result->x), 1e-10);
+  }
+  double scale = 0., deviation = 0.;
+  for (Eigen::Index k = 0; k < c.size(); ++k) {
+    scale = std::max(scale, std::abs(without.x[k]));
+    deviation = std::max(deviation, std::abs(with.x[k] - without.x[k]));
+  }
+  EXPECT_LE(deviation, 1e-8 * std::max(scale, 1e-300));
+  EXPECT_EQ(with.report.active_bounds, without.report.active_bounds);
+  EXPECT_NEAR(with.report.objective_value, without.report.objective_value,
+              1e-9 * std::max(1., std::abs(without.report.objective_value)));
+}
+
+TEST(BoxQPGradientProjection, ScatteredActiveBoundsGiveTheKnownSolution)
+{
+  const Grid_problem grid(large_side(90), 11);
+  const Scattered_solution problem(grid, 0.2, 12);
+  const Eigen::VectorXd l = -grid.bound, u = grid.bound;
+  const Result with = solve_box(grid.Q, problem.c, l, u, true);
+  const Result without = solve_box(grid.Q, problem.c, l, u, false);
+  expect_same_optimum_both_ways(grid.Q, problem.c, l, u, with, without);
+  EXPECT_GT(with.report.projection_steps, 0u);
+  EXPECT_EQ(without.report.projection_steps, 0u);
+  EXPECT_EQ(with.report.active_bounds, problem.active);
+  double deviation = 0.;
+  for (int k = 0; k < grid.n; ++k)
+    deviation = std::max(deviation, std::abs(with.x[k] - problem.x[k]));
+  EXPECT_LE(deviation, 1e-8 * grid.bound.maxCoeff());
+  // The face found leaves little to the active-set iterations.
+  EXPECT_LE(with.report.factorizations, without.report.factorizations);
+}
+
+TEST(BoxQPGradientProjection, SmoothActiveRegionsGiveTheResultOfTheActiveSetPath)
+{
+  const Grid_problem grid(large_side(90), 13);
+  for (double fraction : {0.05, 0.2}) {
+    SCOPED_TRACE(fraction);
+    const Known_solution problem(grid, fraction, 0.4);
+    const Eigen::VectorXd l = -grid.bound, u = grid.bound;
+    const Result with = solve_box(grid.Q, problem.c, l, u, true);
+    const Result without = solve_box(grid.Q, problem.c, l, u, false);
+    expect_same_optimum_both_ways(grid.Q, problem.c, l, u, with, without);
+    EXPECT_GT(with.report.projection_steps, 0u);
+    expect_known_solution(grid, problem, with);
+  }
+}
+
+TEST(BoxQPGradientProjection, WarmStartsGiveTheResultOfTheActiveSetPath)
+{
+  // A good warm start (the solution of the problem itself) and a poor one (the solution of
+  // another scattered problem) both end at the optimum; the good one keeps its active set.
+  const Grid_problem grid(large_side(90), 14);
+  const Scattered_solution problem(grid, 0.2, 15), other(grid, 0.2, 16);
+  const Eigen::VectorXd l = -grid.bound, u = grid.bound;
+  const std::vector<double> exact(problem.x.data(), problem.x.data() + grid.n);
+  const std::vector<double> poor(other.x.data(), other.x.data() + grid.n);
+  const Result good_with = solve_box(grid.Q, problem.c, l, u, true, &exact);
+  const Result good_without = solve_box(grid.Q, problem.c, l, u, false, &exact);
+  expect_same_optimum_both_ways(grid.Q, problem.c, l, u, good_with, good_without);
+  EXPECT_EQ(good_with.report.iterations, good_without.report.iterations);
+  EXPECT_EQ(good_with.report.factorizations, good_without.report.factorizations);
+  const Result poor_with = solve_box(grid.Q, problem.c, l, u, true, &poor);
+  const Result poor_without = solve_box(grid.Q, problem.c, l, u, false, &poor);
+  expect_same_optimum_both_ways(grid.Q, problem.c, l, u, poor_with, poor_without);
+  EXPECT_GT(poor_with.report.projection_steps, 0u);
+  // Reusing the solver (its last factorisation preconditions) gives the same optimum.
+  Active_set_box_QP_solver reused;
+  solve_box(grid.Q, other.c, l, u, true, nullptr, &reused);
+  const Result poor_reused = solve_box(grid.Q, problem.c, l, u, true, &poor, &reused);
+  expect_same_optimum_both_ways(grid.Q, problem.c, l, u, poor_reused, poor_without);
+}
+
+TEST(BoxQPGradientProjection, DegenerateBoundsGiveTheResultOfTheActiveSetPath)
+{
+  const Grid_problem grid(50, 17); // 2500 variables: enough for the gradient projection
+  const int n = grid.n;
+  const double infinity = std::numeric_limits<double>::infinity();
+  const Scattered_solution scattered(grid, 0.2, 18);
+  {
+    SCOPED_TRACE("all bounds active");
+    Eigen::VectorXd c(n);
+    for (int k = 0; k < n; ++k)
+      c[k] = (k % 3 == 0 ? 1e3 : -1e3) * grid.Q.coeff(k, k) * grid.bound[k] * 50.;
+    const Eigen::VectorXd l = -grid.bound, u = grid.bound;
+    const Result with = solve_box(grid.Q, c, l, u, true);
+    const Result without = solve_box(grid.Q, c, l, u, false);
+    expect_same_optimum_both_ways(grid.Q, c, l, u, with, without);
+    EXPECT_EQ(with.report.active_bounds, std::size_t(n));
+  }
+  {
+    SCOPED_TRACE("no bound active");
+    // The unconstrained minimiser lies at half the bounds.
+    const Eigen::VectorXd l = -grid.bound, u = grid.bound;
+    const Eigen::VectorXd c = -(grid.Q * (0.5 * scattered.x));
+    const Result with = solve_box(grid.Q, c, l, u, true);
+    const Result without = solve_box(grid.Q, c, l, u, false);
+    expect_same_optimum_both_ways(grid.Q, c, l, u, with, without);
+    EXPECT_EQ(with.report.active_bounds, 0u);
+  }
+  {
+    SCOPED_TRACE("infinite bounds");
+    Eigen::VectorXd l = -grid.bound, u = grid.bound;
+    for (int k = 0; k < n; ++k) {
+      if (k % 4 == 0)
+        l[k] = -infinity;
+      if (k % 5 == 0)
+        u[k] = infinity;
+    }
+    const Result with = solve_box(grid.Q, scattered.c, l, u, true);
+    const Result without = solve_box(grid.Q, scattered.c, l, u, false);
+    expect_same_optimum_both_ways(grid.Q, scattered.c, l, u, with, without);
+  }
+  {
+    SCOPED_TRACE("a bound equal on both sides");
+    Eigen::VectorXd l = -grid.bound, u = grid.bound;
+    for (int k = 0; k < n; k += 7)
+      l[k] = u[k] = (k % 2 == 0 ? 0.5 : -0.25) * grid.bound[k];
+    const Result with = solve_box(grid.Q, scattered.c, l, u, true);
+    const Result without = solve_box(grid.Q, scattered.c, l, u, false);
+    expect_same_optimum_both_ways(grid.Q, scattered.c, l, u, with, without);
+    for (int k = 0; k < n; k += 7)
+      EXPECT_EQ(with.x[k], l[k]) << "variable " << k;
+  }
 }
 
 } // namespace
