@@ -604,7 +604,8 @@ OutputIterator detect_highlight_line_irregularities(
                            d2 = distance_value[std::size_t(c[2])];
               if (!std::isfinite(d0) || !std::isfinite(d1) || !std::isfinite(d2))
                 continue;
-              const double *p0 = local.point(c[0]), *p1 = local.point(c[1]), *p2 = local.point(c[2]);
+              const double *p0 = local.point(c[0]), *p1 = local.point(c[1]),
+                           *p2 = local.point(c[2]);
               const Vec3 q0{p0[0], p0[1], p0[2]}, q1{p1[0], p1[1], p1[2]}, q2{p2[0], p2[1], p2[2]};
               const Vec3 face_normal = cross(q1 - q0, q2 - q0);
               const double twice_area = norm(face_normal);
@@ -651,8 +652,8 @@ OutputIterator detect_highlight_line_irregularities(
               }
               line_breaks.push_back(on_feature ? 1 : 0);
             }
-            HL::internal::compute_line_residual(polyline, lines[l].is_closed, residual_scales, residuals[l],
-                                                line_breaks);
+            HL::internal::compute_line_residual(polyline, lines[l].is_closed, residual_scales,
+                                                residuals[l], line_breaks);
             // Each sample's mesh vertex; samples where the surface turns too far away from the
             // lights are not scored.
             const auto& residual = residuals[l];
@@ -756,7 +757,8 @@ OutputIterator detect_highlight_line_irregularities(
               pooled.push_back(bending[i]);
             }
           }
-          const HL::internal::Robust_statistics setup_stats = HL::internal::robust_statistics(pooled);
+          const HL::internal::Robust_statistics setup_stats =
+              HL::internal::robust_statistics(pooled);
 
           for (std::size_t l = 0; l < lines.size(); ++l, ++line_id) {
             HL::internal::Robust_statistics stats =
@@ -791,6 +793,19 @@ OutputIterator detect_highlight_line_irregularities(
     }
 
   std::vector<HL::Highlight_line_irregularity<TriangleMesh>> found;
+  // The peak against the smooth surface its surroundings predict: a quadric height field over
+  // the peak's tangent plane, fitted (least squares) to the region's outer vertices (beyond
+  // 60 % of the region's radius from the peak).
+  auto dent_or_bump = [&](int peak, const std::vector<int>& faces) {
+    std::set<int> region_vertices;
+    for (int f : faces)
+      for (int v : corners[std::size_t(f)])
+        region_vertices.insert(v);
+    return HL::internal::peak_lies_below_fit(local, peak, normals[std::size_t(peak)],
+                                             region_vertices)
+               ? HL::Irregularity_kind::DENT
+               : HL::Irregularity_kind::BUMP;
+  };
   if (options.local_residual) {
     // The noise of each setup, floored at half the median over the setups (a setup that only
     // sees planes has next to none, and would make any rounding an anomaly).
@@ -820,10 +835,10 @@ OutputIterator detect_highlight_line_irregularities(
     // A region must show in a share `minimum_evidence` of the setups that can see it.
     std::vector<std::size_t> minimum_setups(static_cast<std::size_t>(nv));
     for (int v = 0; v < nv; ++v)
-      minimum_setups[std::size_t(v)] =
-          (std::max)(std::size_t(1),
-                     std::size_t(std::ceil(
-                         options.minimum_evidence * double(scoring_setups[std::size_t(v)]) - 1e-9)));
+      minimum_setups[std::size_t(v)] = (std::max)(
+          std::size_t(1),
+          std::size_t(
+              std::ceil(options.minimum_evidence * double(scoring_setups[std::size_t(v)]) - 1e-9)));
     std::vector<Vec3> points(static_cast<std::size_t>(nv));
     for (int v = 0; v < nv; ++v) {
       const double* p = local.point(v);
@@ -909,17 +924,7 @@ OutputIterator detect_highlight_line_irregularities(
       } else if (extent < 1) {
         irregularity.kind = HL::Irregularity_kind::EXTENDED;
       } else {
-        // The peak against the smooth surface its surroundings predict: a quadric height
-        // field over the peak's tangent plane, fitted (least squares) to the region's outer
-        // vertices (beyond 60 % of the region's radius from the peak).
-        std::set<int> region_vertices;
-        for (int f : region.faces)
-          for (int v : corners[std::size_t(f)])
-            region_vertices.insert(v);
-        irregularity.kind = HL::internal::peak_lies_below_fit(local, peak, normals[std::size_t(peak)],
-                                                              region_vertices)
-                                ? HL::Irregularity_kind::DENT
-                                : HL::Irregularity_kind::BUMP;
+        irregularity.kind = dent_or_bump(peak, region.faces);
       }
       found.push_back(std::move(irregularity));
     }
@@ -928,10 +933,10 @@ OutputIterator detect_highlight_line_irregularities(
     // A region must show in a share `minimum_evidence` of the setups that can see it.
     std::vector<std::size_t> minimum_setups(static_cast<std::size_t>(nv));
     for (int v = 0; v < nv; ++v)
-      minimum_setups[std::size_t(v)] =
-          (std::max)(std::size_t(1),
-                     std::size_t(std::ceil(
-                         options.minimum_evidence * double(scoring_setups[std::size_t(v)]) - 1e-9)));
+      minimum_setups[std::size_t(v)] = (std::max)(
+          std::size_t(1),
+          std::size_t(
+              std::ceil(options.minimum_evidence * double(scoring_setups[std::size_t(v)]) - 1e-9)));
     const auto regions = HL::internal::group_anomalies(corners, nv, anomalies, join_rings,
                                                        options.margin, minimum_setups, sharp);
     for (const auto& region : regions) {
@@ -980,7 +985,8 @@ OutputIterator detect_highlight_line_irregularities(
       // A defect is local: the response to one of radius R spreads over R + 3w/2 from its
       // centre, so a defect up to the detection's scale (R <= 3w/2) spreads its anomalies over
       // a length of at most 6w. Larger or longer regions are shape at another scale: design.
-      const double slenderness = (std::min)(1.0, std::pow(2 * width / (std::max)(length, 1e-300), 2));
+      const double slenderness =
+          (std::min)(1.0, std::pow(2 * width / (std::max)(length, 1e-300), 2));
       const double locality = (std::min)(1.0, std::pow(6 * w / (std::max)(length, 1e-300), 2));
       std::size_t seeing = 1;
       for (std::size_t i : region.anomalies)
@@ -992,24 +998,14 @@ OutputIterator detect_highlight_line_irregularities(
       } else if (locality < 1) {
         irregularity.kind = HL::Irregularity_kind::EXTENDED;
       } else {
-        // The peak against the smooth surface its surroundings predict: a quadric height
-        // field over the peak's tangent plane, fitted (least squares) to the region's outer
-        // vertices (beyond 60 % of the region's radius from the peak).
-        int peak = 0;
+        int peak = 0; // the strongest anomaly's vertex
         double best = -1;
         for (std::size_t i : region.anomalies)
           if (anomalies[i].score > best) {
             best = anomalies[i].score;
             peak = anomalies[i].vertex;
           }
-        std::set<int> region_vertices;
-        for (int f : region.faces)
-          for (int v : corners[std::size_t(f)])
-            region_vertices.insert(v);
-        irregularity.kind = HL::internal::peak_lies_below_fit(local, peak, normals[std::size_t(peak)],
-                                                              region_vertices)
-                                ? HL::Irregularity_kind::DENT
-                                : HL::Irregularity_kind::BUMP;
+        irregularity.kind = dent_or_bump(peak, region.faces);
       }
       found.push_back(std::move(irregularity));
     }

@@ -44,20 +44,33 @@ struct Line_bending
   std::vector<std::size_t> nearest_vertex;
 };
 
-// `points` is the polyline; for a closed line the last point joins the first (it is not
-// repeated).
-inline void compute_line_bending(const std::vector<vector3::Vec3>& input, bool closed,
-                                 const Line_bending_scales& scales, Line_bending& out)
+// A polyline resampled at equal arc-length steps (`step`, or for a closed line the nearest
+// step that divides its length), with the index of the input point nearest to each sample and,
+// if `breaks` flags input points, which samples have a flagged point between them and the next
+// (or at them).
+struct Line_samples
+{
+  std::vector<vector3::Vec3> points;
+  std::vector<std::size_t> nearest_vertex;
+  std::vector<char> broken;
+  double step = 0;
+};
+
+// The samples do not depend on where the line starts or which way it runs (that order comes
+// from coordinates and changes under rigid motions): open lines are sampled symmetrically about
+// their middle, closed lines from the point farthest from their centroid. `points` is the
+// polyline; for a closed line the last point joins the first (it is not repeated). Returns
+// false (and no samples) for lines too short or degenerate to sample.
+inline bool resample_line(const std::vector<vector3::Vec3>& input, bool closed, double step,
+                          Line_samples& out, const std::vector<char>& breaks = {})
 {
   using namespace vector3;
-  out.bending.clear();
+  out.points.clear();
   out.nearest_vertex.clear();
+  out.broken.clear();
   const std::size_t n = input.size();
-  if (n < 2 || !(scales.step > 0))
-    return;
-  // The samples must not depend on where the line starts or which way it runs (that order
-  // comes from coordinates and changes under rigid motions): open lines are sampled
-  // symmetrically about their middle, closed lines from the node farthest from their centroid.
+  if (n < 2 || !(step > 0))
+    return false;
   std::size_t first_point = 0;
   if (closed) {
     Vec3 centroid{0, 0, 0};
@@ -79,32 +92,55 @@ inline void compute_line_bending(const std::vector<vector3::Vec3>& input, bool c
     arc[i + 1] = arc[i] + norm(point(i + 1) - point(i));
   const double length = arc.back();
   if (!(length > 0) || !std::isfinite(length))
-    return;
-
-  // Closed lines: a step that divides the length, so the samples are periodic.
+    return false;
   std::size_t samples;
-  double h = scales.step, start = 0;
+  double h = step, start = 0;
   if (closed) {
     samples = std::size_t(std::llround(length / h));
     if (samples < 3)
-      return;
+      return false;
     h = length / double(samples);
   } else {
     samples = std::size_t(std::floor(length / h)) + 1;
     start = 0.5 * (length - double(samples - 1) * h);
   }
-  std::vector<Vec3> resampled(samples);
+  out.step = h;
+  out.points.resize(samples);
   out.nearest_vertex.resize(samples);
+  out.broken.assign(samples, 0);
+  auto is_break = [&](std::size_t i) { return !breaks.empty() && breaks[(i + first_point) % n]; };
   std::size_t seg = 0;
   for (std::size_t i = 0; i < samples; ++i) {
     const double s = (std::min)(start + double(i) * h, length);
-    while (seg + 1 < segments && arc[seg + 1] < s)
+    while (seg + 1 < segments && arc[seg + 1] < s) {
+      if (i > 0 && is_break(seg + 1))
+        out.broken[i - 1] = 1;
       ++seg;
+    }
     const double len = arc[seg + 1] - arc[seg];
     const double t = len > 0 ? (std::min)(1.0, (std::max)(0.0, (s - arc[seg]) / len)) : 0.0;
-    resampled[i] = point(seg) + t * (point(seg + 1) - point(seg));
+    out.points[i] = point(seg) + t * (point(seg + 1) - point(seg));
     out.nearest_vertex[i] = ((t < 0.5 ? seg : seg + 1) + first_point) % n;
+    if (is_break(seg) || is_break(seg + 1))
+      out.broken[i] = 1;
   }
+  return true;
+}
+
+// See resample_line() for `input` and `closed`.
+inline void compute_line_bending(const std::vector<vector3::Vec3>& input, bool closed,
+                                 const Line_bending_scales& scales, Line_bending& out)
+{
+  using namespace vector3;
+  out.bending.clear();
+  out.nearest_vertex.clear();
+  Line_samples line;
+  if (!resample_line(input, closed, scales.step, line))
+    return;
+  const std::vector<Vec3>& resampled = line.points;
+  const std::size_t samples = resampled.size();
+  const double h = line.step;
+  out.nearest_vertex = line.nearest_vertex;
 
   out.bending.assign(samples, -1.0);
   const int half = scales.fine_samples / 2, reach = 3 * half;
@@ -150,10 +186,10 @@ inline void compute_line_bending(const std::vector<vector3::Vec3>& input, bool c
 // depends on samples within `reach` of i.
 struct Line_residual_scales
 {
-  double step = 0; // h
-  int centre = 2;  // samples averaged on either side of the centre
-  int gap = 6;     // the fit ignores samples closer than this
-  int reach = 16;  // and farther than this
+  double step = 0;      // h
+  int centre = 2;       // samples averaged on either side of the centre
+  int gap = 6;          // the fit ignores samples closer than this
+  int reach = 16;       // and farther than this
   int minimum_side = 3; // samples the fit needs on each side of the gap
 };
 
@@ -178,63 +214,13 @@ inline void compute_line_residual(const std::vector<vector3::Vec3>& input, bool 
   out.tangent.clear();
   out.valid.clear();
   out.nearest_vertex.clear();
-  const std::size_t n = input.size();
-  if (n < 2 || !(scales.step > 0))
+  Line_samples line;
+  if (!resample_line(input, closed, scales.step, line, breaks))
     return;
-  // As for the bending: sampled independently of where the line starts and which way it runs.
-  std::size_t first_point = 0;
-  if (closed) {
-    Vec3 centroid{0, 0, 0};
-    for (const Vec3& p : input)
-      centroid = centroid + (1.0 / double(n)) * p;
-    double farthest = -1;
-    for (std::size_t i = 0; i < n; ++i) {
-      const Vec3 d = input[i] - centroid;
-      if (dot(d, d) > farthest) {
-        farthest = dot(d, d);
-        first_point = i;
-      }
-    }
-  }
-  auto point = [&](std::size_t i) -> const Vec3& { return input[(i + first_point) % n]; };
-  const std::size_t segments = closed ? n : n - 1;
-  std::vector<double> arc(segments + 1, 0.0);
-  for (std::size_t i = 0; i < segments; ++i)
-    arc[i + 1] = arc[i] + norm(point(i + 1) - point(i));
-  const double length = arc.back();
-  if (!(length > 0) || !std::isfinite(length))
-    return;
-  std::size_t samples;
-  double h = scales.step, start = 0;
-  if (closed) {
-    samples = std::size_t(std::llround(length / h));
-    if (samples < 3)
-      return;
-    h = length / double(samples);
-  } else {
-    samples = std::size_t(std::floor(length / h)) + 1;
-    start = 0.5 * (length - double(samples - 1) * h);
-  }
-  std::vector<Vec3> resampled(samples);
-  out.nearest_vertex.resize(samples);
-  // Whether a break point lies on the line between a sample and the next one (or at it).
-  std::vector<char> broken(samples, 0);
-  auto is_break = [&](std::size_t i) { return !breaks.empty() && breaks[(i + first_point) % n]; };
-  std::size_t seg = 0;
-  for (std::size_t i = 0; i < samples; ++i) {
-    const double s = (std::min)(start + double(i) * h, length);
-    while (seg + 1 < segments && arc[seg + 1] < s) {
-      if (i > 0 && is_break(seg + 1))
-        broken[i - 1] = 1;
-      ++seg;
-    }
-    const double len = arc[seg + 1] - arc[seg];
-    const double t = len > 0 ? (std::min)(1.0, (std::max)(0.0, (s - arc[seg]) / len)) : 0.0;
-    resampled[i] = point(seg) + t * (point(seg + 1) - point(seg));
-    out.nearest_vertex[i] = ((t < 0.5 ? seg : seg + 1) + first_point) % n;
-    if (is_break(seg) || is_break(seg + 1))
-      broken[i] = 1;
-  }
+  const std::vector<Vec3>& resampled = line.points;
+  const std::vector<char>& broken = line.broken;
+  const std::size_t samples = resampled.size();
+  out.nearest_vertex = line.nearest_vertex;
   out.residual.assign(samples, Vec3{0, 0, 0});
   out.tangent.assign(samples, Vec3{0, 0, 0});
   out.valid.assign(samples, 0);
