@@ -125,11 +125,11 @@ std::string energy_name(HL::Fairness_energy energy)
 {
   switch (energy) {
   case HL::Fairness_energy::WILLMORE:
-    return "WILLMORE (default)";
+    return "WILLMORE";
   case HL::Fairness_energy::MEAN_CURVATURE:
     return "MEAN_CURVATURE";
   default:
-    return "CURVATURE_VARIATION";
+    return "CURVATURE_VARIATION (default)";
   }
 }
 
