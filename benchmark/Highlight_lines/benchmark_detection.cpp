@@ -333,10 +333,12 @@ void local_table(const std::string& name, unsigned seeds)
             disc.push_back(f);
         }
         std::vector<HB::Irregularity> dented, undented;
-        CGAL::detect_highlight_line_irregularities(mesh, lights, std::back_inserter(dented),
-                                                   HLP::local_residual(HLP::face_range(disc), local_residual));
-        CGAL::detect_highlight_line_irregularities(original, lights, std::back_inserter(undented),
-                                                   HLP::local_residual(HLP::face_range(disc), local_residual));
+        CGAL::detect_highlight_line_irregularities(
+            mesh, lights, std::back_inserter(dented),
+            HLP::local_residual(HLP::face_range(disc), local_residual));
+        CGAL::detect_highlight_line_irregularities(
+            original, lights, std::back_inserter(undented),
+            HLP::local_residual(HLP::face_range(disc), local_residual));
         ++defects;
         seen += HB::regions_of_defects(mesh, {d}, dented)[0] != std::size_t(-1);
         quiet += undented.empty();

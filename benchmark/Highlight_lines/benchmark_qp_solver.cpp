@@ -348,8 +348,8 @@ void cases(benchmark::internal::Benchmark* benchmark)
 // factorisation of the same matrix (the solver's own, internal::Supernodal_LDLT, on the
 // whole P), both timed in every repetition of the case, in CPU time of the thread (both are
 // serial); the counters are medians over the repetitions, and ratio_without_analysis leaves
-// out the symbolic analysis (AMD ordering, supernodes) that a cold solve includes. Two kinds of program on the same fairing-like matrix, 20 % of the bounds
-// active at the optimum:
+// out the symbolic analysis (AMD ordering, supernodes) that a cold solve includes. Two kinds of
+// program on the same fairing-like matrix, 20 % of the bounds active at the optimum:
 //   kind 0, smooth    -- the active bounds form smooth regions (the clamped smooth field of
 //                        Known_solution_problem);
 //   kind 1, scattered -- the active bounds are scattered at random, as in the test problems
@@ -416,7 +416,8 @@ struct Ratio_case_data
   {
     const double fraction = 0.2;
     if (kind == SMOOTH) {
-      const Known_solution_problem problem(patch, fraction, 1.015, 0.01), nearby(patch, fraction, 1., 0.);
+      const Known_solution_problem problem(patch, fraction, 1.015, 0.01),
+          nearby(patch, fraction, 1., 0.);
       c = problem.c;
       solution = problem.solution;
       active = problem.active;
@@ -437,8 +438,7 @@ struct Ratio_case_data
     Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> permutation;
     Sparse_matrix pattern = patch.Q;
     Eigen::internal::minimum_degree_ordering(pattern, permutation);
-    const std::vector<int> ordering(permutation.indices().data(),
-                                    permutation.indices().data() + n);
+    const std::vector<int> ordering(permutation.indices().data(), permutation.indices().data() + n);
     ldlt.analyze(n, patch.Q.outerIndexPtr(), patch.Q.innerIndexPtr(), ordering);
     analysis_seconds = thread_seconds() - begin;
   }
@@ -504,7 +504,8 @@ void BM_box_QP_vs_factorization(benchmark::State& state)
   double deviation = 0.;
   for (Eigen::Index i = 0; i < data.solution.size(); ++i)
     deviation = std::max(deviation, std::abs(x[i] - data.solution[i]));
-  const double solve_median = median(solve_times), factorization_median = median(factorization_times);
+  const double solve_median = median(solve_times),
+               factorization_median = median(factorization_times);
   state.counters["ratio"] = solve_median / factorization_median;
   state.counters["solve_ms"] = 1e3 * solve_median;
   state.counters["factorization_ms"] = 1e3 * factorization_median;

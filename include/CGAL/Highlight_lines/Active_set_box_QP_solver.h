@@ -1702,8 +1702,7 @@ private:
     // A product with P streams the matrix from memory; the dense kernels of a factorisation
     // run about three times faster per flop.
     const double product_flops = 3. * (2. * double(Q.nonZeros()) + 10. * double(n));
-    const double budget =
-        gradient_projection_budget_ * ldlt_.factorization_flops() / product_flops;
+    const double budget = gradient_projection_budget_ * ldlt_.factorization_flops() / product_flops;
     std::size_t products = 0;
     const Eigen::VectorXd inverse_diagonal = diagonal.cwiseInverse();
 

@@ -202,12 +202,13 @@ TEST(LineResidual, VanishesOnSmoothLinesPeaksAtABumpAndStopsAtBreaks)
   }
 
   // A sideways bump of height 0.02 and half-width 0.4 around s = 5.
-  HLI::compute_line_residual(sampled_curve(10, 500,
-                                           [](double s) {
-                                             const double t = (s - 5) / 0.4;
-                                             return Vec3{s, t * t < 1 ? 0.02 * std::pow(1 - t * t, 3) : 0.0, 0};
-                                           }),
-                             false, scales, bumped);
+  HLI::compute_line_residual(
+      sampled_curve(10, 500,
+                    [](double s) {
+                      const double t = (s - 5) / 0.4;
+                      return Vec3{s, t * t < 1 ? 0.02 * std::pow(1 - t * t, 3) : 0.0, 0};
+                    }),
+      false, scales, bumped);
   std::size_t peak = 0;
   for (std::size_t i = 0; i < bumped.valid.size(); ++i)
     if (bumped.valid[i] &&

@@ -196,7 +196,7 @@ inline std::vector<Anomaly_region> group_anomalies(const std::vector<std::array<
 struct Peak_region
 {
   std::vector<int> faces;
-  std::vector<std::size_t> anomalies; // in the disc around the centre: indices into the list
+  std::vector<std::size_t> anomalies;     // in the disc around the centre: indices into the list
   std::vector<std::size_t> neighbourhood; // all anomalies within `neighbourhood_radius`
   int centre = -1;                        // vertex
   std::size_t setups = 0;                 // distinct setups among `anomalies`
