@@ -49,6 +49,8 @@ const char* usage =
     "  --offsets N         shifts of the lights per direction (default 2)\n"
     "  --scale W           scale of the bending measure, in mean edge lengths (default 3)\n"
     "  --threshold Z       robust z-score of an anomaly (default 5)\n"
+    "  --local-residual    score the lines by their sideways residual from a local fit\n"
+    "                      (opt-in, not yet the default: see the manual)\n"
     "  --size W H          picture size in pixels (default 1600 1000)\n"
     "  --help              this text\n";
 
@@ -61,6 +63,7 @@ struct Options
   std::string out = "irregularities";
   int lines = 30, orientations = 3, offsets = 2;
   double scale = 3, threshold = 5;
+  bool local_residual = false;
   int width = 1600, height = 1000;
 };
 
@@ -86,6 +89,8 @@ Options parse(int argc, char** argv)
       o.scale = number(i, argc, argv);
     else if (a == "--threshold")
       o.threshold = number(i, argc, argv);
+    else if (a == "--local-residual")
+      o.local_residual = true;
     else if (a == "--size") {
       o.width = int(number(i, argc, argv));
       o.height = int(number(i, argc, argv));
@@ -119,7 +124,8 @@ int main(int argc, char** argv)
     CGAL::detect_highlight_line_irregularities(
         mesh, lights, std::back_inserter(found),
         HLP::combine(HLP::number_of_orientations(o.orientations), HLP::number_of_offsets(o.offsets),
-                     HLP::detection_scale(o.scale), HLP::detection_threshold(o.threshold)));
+                     HLP::detection_scale(o.scale), HLP::detection_threshold(o.threshold),
+                     HLP::local_residual(o.local_residual)));
 
     std::cout << found.size()
               << " irregular region(s), the likeliest defects first (confidence below 0.5: "

@@ -688,6 +688,32 @@ TEST(Detection, ReportsProgressCanBeCancelledAndRunsInParallel)
 #endif
 }
 
+// The opt-in local residual gives the same regions on a Polyhedron_3 as on a Surface_mesh.
+TEST(LocalResidual, ActsAlikeOnPolyhedronAndSurfaceMesh)
+{
+  test::Soup soup = test::grid(40, 2.0 / 40, -1, -1, hood, 0.3, 7);
+  HB::Mesh mesh = test::to_mesh<HB::Mesh>(soup);
+  ASSERT_EQ(HB::inject_defects(mesh, 1, 4.0, 0.5, 7, [](auto) { return true; }).size(), 1u);
+  for (auto v : vertices(mesh))
+    soup.points[std::size_t(v)] = mesh.point(v);
+  const test::Polyhedron polyhedron = test::to_mesh<test::Polyhedron>(soup);
+  const auto lights = HL::default_light_setup(mesh, HLP::number_of_lines(30));
+  std::vector<HB::Irregularity> a;
+  std::vector<HL::Highlight_line_irregularity<test::Polyhedron>> b;
+  CGAL::detect_highlight_line_irregularities(mesh, lights, std::back_inserter(a),
+                                             HLP::local_residual(true));
+  CGAL::detect_highlight_line_irregularities(polyhedron, lights, std::back_inserter(b),
+                                             HLP::local_residual(true));
+  ASSERT_GE(a.size(), 1u);
+  ASSERT_EQ(b.size(), a.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(b[i].faces.size(), a[i].faces.size());
+    EXPECT_EQ(b[i].kind, a[i].kind);
+    EXPECT_NEAR(b[i].score, a[i].score, 1e-9 * a[i].score);
+    EXPECT_NEAR(b[i].confidence, a[i].confidence, 1e-12);
+  }
+}
+
 TEST(Detection, SweepOptionsActAlikeOnPolyhedronAndSurfaceMesh)
 {
   test::Soup soup = test::grid(40, 2.0 / 40, -1, -1, hood, 0.3, 7);
