@@ -134,8 +134,10 @@ int main(int argc, char** argv)
     for (std::size_t i = 0; i < found.size(); ++i) {
       const auto& r = found[i];
       std::cout << "  #" << i + 1 << ": " << HL::to_string(r.kind) << ", confidence "
-                << r.confidence << ", score " << r.score << ", bending up to " << r.max_bending
-                << " rad, seen on " << r.number_of_lines << " lines in " << r.number_of_light_setups
+                << r.confidence << ", score " << r.score
+                << (o.local_residual ? ", sideways offset up to " : ", bending up to ")
+                << r.max_bending << (o.local_residual ? " mean edge lengths" : " rad")
+                << ", seen on " << r.number_of_lines << " lines in " << r.number_of_light_setups
                 << " light setups, " << r.faces.size() << " faces around "
                 << mesh.point(r.peak_vertex) << "\n";
       std::vector<std::size_t> ids;
