@@ -1951,17 +1951,17 @@ private:
       }
       // A cold start (or a warm start without active bounds) activates one bound first, the
       // one crossed first on the way from the (feasible) start to the free minimiser, then
-      // twice as many at each iteration as long as each activation clears many other
+      // twice as many at each iteration, again those crossed first on the way from the best
+      // feasible point so far, as long as each activation clears at least three other
       // violations: a few active bounds then hold the solution back everywhere (a deep dent
       // whose steps are limited by a few short edges), and activating by the violations
-      // would overshoot far.
+      // would overshoot far (on a fairing of 10^4 variables whose first program ends with 15
+      // active bounds, that took 24 factorisations instead of 12).
       const std::size_t violations = count_violated_bounds(x, x_tolerance);
       const bool was_limited = activation_limit != unlimited;
       if (iteration > 0 && was_limited) {
         const bool few_hold_many =
-            double(violations) +
-                std::max(3. * double(previous_activations), 0.1 * double(previous_violations)) <
-            double(previous_violations);
+            double(violations) + 3. * double(previous_activations) < double(previous_violations);
         activation_limit = few_hold_many ? 2 * activation_limit : unlimited;
       }
       previous_violations = violations;
@@ -1973,10 +1973,11 @@ private:
       if (iteration == 0)
         activation = Activation::SPARSE;
       else if (activation_limit != unlimited)
-        activation = Activation::ALL; // the most violated, up to the limit
+        activation = Activation::ALL; // the first crossed, up to the limit
       else if (previous_activations > 0 && 2 * changes <= previous_activations && !was_limited)
         activation = Activation::ALL;
-      const Eigen::VectorXd* way_from = iteration == 0 && !knows_active_set ? &x_ : nullptr;
+      const Eigen::VectorXd* way_from =
+          activation_limit != unlimited && !knows_active_set ? &x_ : nullptr;
       previous_activations =
           activate_violated_bounds(x, x_tolerance, activation, way_from, activation_limit);
       changes += previous_activations;
