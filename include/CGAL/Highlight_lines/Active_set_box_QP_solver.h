@@ -1375,7 +1375,16 @@ private:
           M(f + t, f + t2) = column(left[t2])[left[t]];
         rhs[f + t] = y0[left[t]];
       }
-      const Eigen::VectorXd solution = M.fullPivLu().solve(rhs);
+      // The blocks of M differ in scale by the square of P's (P against P^-1 entries):
+      // equilibrated, a pivoting LU solves it to working accuracy, and the refinement of
+      // correct_free_entries() converges instead of diverging.
+      Eigen::VectorXd scale = Eigen::VectorXd::Ones(f + a);
+      for (Eigen::Index k = 0; k < f + a; ++k)
+        if (std::abs(M(k, k)) > 0.)
+          scale[k] = 1. / std::sqrt(std::abs(M(k, k)));
+      const Eigen::VectorXd scaled_solution =
+          (scale.asDiagonal() * M * scale.asDiagonal()).fullPivLu().solve(scale.cwiseProduct(rhs));
+      const Eigen::VectorXd solution = scale.cwiseProduct(scaled_solution);
       if (!solution.allFinite())
         return false;
       for (Eigen::Index p = 0; p < f; ++p)
@@ -1962,7 +1971,15 @@ private:
       if (iteration > 0 && was_limited) {
         const bool few_hold_many =
             double(violations) + 3. * double(previous_activations) < double(previous_violations);
-        activation_limit = few_hold_many ? 2 * activation_limit : unlimited;
+        // Activations that cleared at least half as many violations as their number (but not
+        // three times it) act independently: plain PDAS then converges fast. Where they
+        // cleared fewer (or violations elsewhere grew), the bounds are coupled and
+        // activating them all would overshoot: keep the limit.
+        const bool independent = 2. * double(violations) + double(previous_activations) <=
+                                 2. * double(previous_violations);
+        activation_limit = few_hold_many ? 2 * activation_limit
+                           : independent ? unlimited
+                                         : activation_limit;
       }
       previous_violations = violations;
       // Activations that the next iteration mostly keeps (and were not limited) are not
