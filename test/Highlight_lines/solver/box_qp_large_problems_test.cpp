@@ -234,6 +234,45 @@ TEST(BoxQPLargeProblems, WarmStartOneBoundAwayFromTheOptimumSkipsRefactorisation
   EXPECT_EQ(result.report.factorizations, 1u);
 }
 
+TEST(BoxQPLargeProblems, ScalingTheProblemChangesNeitherItsPathNorItsCost)
+{
+  // A warm start with an active bound missing and an extra one: the next free sets differ
+  // from the factorised one by variables that left it and variables that joined it, and the
+  // bordered systems mix entries of P with entries of P^-1. At the scale of a fairing
+  // program (P of the order of 10^8) those differ by twenty orders of magnitude; solved
+  // without equilibration, the refinement diverged and each such iteration refactorised.
+  std::vector<Box_QP_report> reports;
+  for (double scale : {1., 1e8}) {
+    SCOPED_TRACE(scale);
+    Grid_problem grid(large_side(100), 5);
+    grid.Q *= scale;
+    const Known_solution problem(grid, 0.1, 0.3); // c scales with Q
+    // Free the active variable deepest inside its active region (the largest multiplier
+    // relative to its diagonal) and pin the free variable farthest from its bounds.
+    const Eigen::VectorXd gradient = grid.Q * problem.x + problem.c;
+    const auto depth = [&](int k) {
+      return std::abs(problem.x[k]) == grid.bound[k] ? std::abs(gradient[k]) / grid.Q.coeff(k, k)
+                                                     : 1. - std::abs(problem.x[k]) / grid.bound[k];
+    };
+    int freed = -1, pinned = -1;
+    for (int k = 0; k < grid.n; ++k) {
+      int& chosen = std::abs(problem.x[k]) == grid.bound[k] ? freed : pinned;
+      if (chosen < 0 || depth(k) > depth(chosen))
+        chosen = k;
+    }
+    std::vector<double> x0(problem.x.data(), problem.x.data() + grid.n);
+    x0[std::size_t(freed)] = 0.;
+    x0[std::size_t(pinned)] = grid.bound[pinned];
+    Active_set_box_QP_solver solver;
+    const Result result = solve(solver, grid, problem, &x0);
+    expect_known_solution(grid, problem, result);
+    reports.push_back(result.report);
+  }
+  EXPECT_GT(reports[0].iterations, 2u); // the bordered path is taken
+  EXPECT_EQ(reports[1].iterations, reports[0].iterations);
+  EXPECT_EQ(reports[1].factorizations, reports[0].factorizations);
+}
+
 TEST(BoxQPLargeProblems, WarmStartWithoutActiveBoundsActivatesAsAColdStartDoes)
 {
   // The next program of a fairing whose trust region grew: the last step lies inside the new
