@@ -216,10 +216,11 @@ the lights of each setup are first brought closer (never farther apart) until it
 at most `w` apart on three quarters of the surface facing them (the lines lie `s/|∇d|` apart;
 `|∇d|` grows with the curvature, so the flatter parts set the spacing): a defect is only seen
 where several lines of a setup cross it, and with the lights' own spacing the flat parts of a
-CAD part or of a car body are crossed by a line every 20 to 50 `ē`. Then each line is resampled at `h = w/4` and, at each sample, a quadratic in arc length is fitted
-(least squares) to the samples between `3w/2` and `4w` away on both sides, within the stretch
-of line that crosses no sharp edge (at least three samples on each side; nearer to a sharp edge
-or an end of the line the sample is not scored): the course the line's neighbourhood predicts,
+CAD part or of a car body are crossed by a line every 20 to 50 `ē`. Then each line is
+resampled at `h = w/4` and, at each sample, a quadratic in arc length is fitted (least
+squares) to the samples between `3w/2` and `4w` away on both sides, within the stretch of line
+that crosses no sharp edge (at least three samples on each side; nearer to a sharp edge or an
+end of the line the sample is not scored): the course the line's neighbourhood predicts,
 without the part a local defect displaces. The residual is the mean sideways offset (across
 the fit's tangent) of the samples within `w/2` from that prediction, converted to levels of
 the lights by the gradient of the highlight distance `d/s` at the sample's vertex (a shift
@@ -232,23 +233,26 @@ the peaks along each line (the largest within `3w/2`) above `detection_threshold
 than one ring from a sharp edge, whose offset exceeds `minimum_bending` mean edge lengths.
 They are grouped around their peaks, strongest first, instead of into clusters: the disc of
 radius `2w` around an anomaly that holds anomalies of the most distinct light setups is
-re-centred on their mean, becomes a region if they show in `minimum_evidence` of the setups
-that see its centre and no earlier region more than twice as strong (the sum over the setups
-of their strongest score) has its centre within `4w` (the fit around a defect leaves weaker
-side lobes beyond its disc), and claims them; the
-region is the faces with a vertex within the disc's reach plus `region_margin` edge lengths of
-its centre, reached along edges without crossing a sharp edge or an earlier region. So
+re-centred on their mean, and becomes a region and claims them if they show in
+`minimum_evidence` of the setups that see its centre without the side lobes of earlier regions
+(the fit around a defect pulls the samples `3w/2` to `4w` along the same lines the other way:
+an anomaly is a lobe if an earlier region has a stronger anomaly on the same line within `4w`
+of it; a defect next to a stronger feature keeps the anomalies of its lines that do not cross
+the feature); the region is the faces with a vertex within the disc's reach plus
+`region_margin` edge lengths of its centre, reached along edges without crossing a sharp edge
+or an earlier region. So
 regions are sized to the defect (about `2w + margin` in radius, not thousands of faces) and
 a defect next to a feature gets its own region. The `kind` and the `confidence` are those
 above, computed on the cluster (anomalies less than `detection_scale` edges apart, chained)
 of the region's strongest anomaly, with `11w` in place of `6w` (the fit sees a defect from
 `4w` away). Measured with `benchmark_detection --shared --local-residual` (radius 5 ē,
 2 × 4 defects 0.2 ē high per shared mesh), the located recall (the region holding the defect
-lies within 3R of it) is 0.625 on the beetle, 0.5 on the bunny, the camel head and spot,
-0.25 on the rocker arm and 0.125 on the fandisk, where the bending measure locates none; but
-the undented meshes still yield 2 to 23 regions, most of them design ranked above the small
-defects, and on the bundled demo the roof dent is not the first region: this is why it is not
-the default yet.
+lies within 3R of it) is 0.75 on the rocker arm, 0.625 on the beetle, 0.5 on the bunny and the
+camel head, 0.375 on the fandisk and spot, where the bending measure locates none; but the
+undented meshes still yield 4 to 33 regions, some of them design (on the Beetle a round bump on
+its midplane) with full confidence and many ranked above the small defects, and on the bundled
+demo the roof dent is not the first region: this is why it is not the default yet. The
+denser lines make it about twice as slow (5 s on the shared Beetle, 39k faces, 36 setups).
 
 A defect is only seen where several lines cross it: the lights' spacing and
 `number_of_offsets` set how small a defect can be found. Design features that are not sharp
