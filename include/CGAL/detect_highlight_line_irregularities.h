@@ -216,7 +216,7 @@ the lights of each setup are first brought closer (never farther apart) until it
 at most `w` apart on three quarters of the surface facing them (the lines lie `s/|∇d|` apart;
 `|∇d|` grows with the curvature, so the flatter parts set the spacing): a defect is only seen
 where several lines of a setup cross it, and with the lights' own spacing the flat parts of a
-CAD part or of a car body are crossed by a line every 20 to 50 `ē`. Then each line is
+CAD part or of a car body are crossed by a line every 12 to 35 `ē` (30 lights). Then each line is
 resampled at `h = w/4` and, at each sample, a quadratic in arc length is fitted (least
 squares) to the samples between `3w/2` and `4w` away on both sides, within the stretch of line
 that crosses no sharp edge (at least three samples on each side; nearer to a sharp edge or an
@@ -338,7 +338,7 @@ and the lights together, and independent of the mesh's face order.
       \cgalParamDefault{`true`}
     \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::local_residual}
-      \cgalParamDescription{whether the lines are scored by their sideways residual from a local fit and the anomalies grouped around their peaks (see "The local residual" above) rather than by the bending against each line's statistics and grouped into clusters; with it, `minimum_bending` is a sideways offset in mean edge lengths and `Highlight_line_irregularity::max_bending` the largest such offset}
+      \cgalParamDescription{whether the lines are scored by their sideways residual from a local fit and the anomalies grouped around their peaks (see "The local residual" above) rather than by the bending against each line's statistics and grouped into clusters; with it, the spacing of `lights` is only an upper bound (each setup's lights are brought closer until its lines lie at most `w` apart on most of the surface), `minimum_bending` is a sideways offset in mean edge lengths and `Highlight_line_irregularity::max_bending` the largest such offset}
       \cgalParamType{`bool`}
       \cgalParamDefault{`false`}
     \cgalParamNEnd
