@@ -212,10 +212,15 @@ written by decreasing `confidence * score`: local defects first, design last.
 angle, bounded, and each sample is judged against its whole line: on scans whose lines bend
 everywhere no sample stands out, and the clusters chain over design features until they cover
 half of the mesh, so that a defect is "found" without being located. With `local_residual`,
-each line is resampled at `h = w/4` and, at each sample, a quadratic in arc length is fitted
-(least squares) to the samples between `3w/2` and `4w` away on both sides, within the stretch
-of line that crosses no sharp edge (at least three samples on each side; nearer to a sharp edge
-or an end of the line the sample is not scored): the course the line's neighbourhood predicts,
+the lights of each setup are first brought closer (never farther apart) until its lines lie
+at most `w` apart on three quarters of the surface facing them (the lines lie `s/|∇d|` apart;
+`|∇d|` grows with the curvature, so the flatter parts set the spacing): a defect is only seen
+where several lines of a setup cross it, and with the lights' own spacing the flat parts of a
+CAD part or of a car body are crossed by a line every 12 to 35 `ē` (30 lights). Then each line is
+resampled at `h = w/4` and, at each sample, a quadratic in arc length is fitted (least
+squares) to the samples between `3w/2` and `4w` away on both sides, within the stretch of line
+that crosses no sharp edge (at least three samples on each side; nearer to a sharp edge or an
+end of the line the sample is not scored): the course the line's neighbourhood predicts,
 without the part a local defect displaces. The residual is the mean sideways offset (across
 the fit's tangent) of the samples within `w/2` from that prediction, converted to levels of
 the lights by the gradient of the highlight distance `d/s` at the sample's vertex (a shift
@@ -228,23 +233,26 @@ the peaks along each line (the largest within `3w/2`) above `detection_threshold
 than one ring from a sharp edge, whose offset exceeds `minimum_bending` mean edge lengths.
 They are grouped around their peaks, strongest first, instead of into clusters: the disc of
 radius `2w` around an anomaly that holds anomalies of the most distinct light setups is
-re-centred on their mean, becomes a region if they show in `minimum_evidence` of the setups
-that see its centre and no earlier region more than twice as strong (the sum over the setups
-of their strongest score) has its centre within `4w` (the fit around a defect leaves weaker
-side lobes beyond its disc), and claims them; the
-region is the faces with a vertex within the disc's reach plus `region_margin` edge lengths of
-its centre, reached along edges without crossing a sharp edge or an earlier region. So
+re-centred on their mean, and becomes a region and claims them if they show in
+`minimum_evidence` of the setups that see its centre without the side lobes of earlier regions
+(the fit around a defect pulls the samples `3w/2` to `4w` along the same lines the other way:
+an anomaly is a lobe if an earlier region has a stronger anomaly on the same line within `4w`
+of it; a defect next to a stronger feature keeps the anomalies of its lines that do not cross
+the feature); the region is the faces with a vertex within the disc's reach plus
+`region_margin` edge lengths of its centre, reached along edges without crossing a sharp edge
+or an earlier region. So
 regions are sized to the defect (about `2w + margin` in radius, not thousands of faces) and
 a defect next to a feature gets its own region. The `kind` and the `confidence` are those
 above, computed on the cluster (anomalies less than `detection_scale` edges apart, chained)
 of the region's strongest anomaly, with `11w` in place of `6w` (the fit sees a defect from
 `4w` away). Measured with `benchmark_detection --shared --local-residual` (radius 5 ē,
 2 × 4 defects 0.2 ē high per shared mesh), the located recall (the region holding the defect
-lies within 3R of it) is 0.625 on the beetle, 0.5 on the bunny, the camel head and spot,
-0.25 on the rocker arm and 0.125 on the fandisk, where the bending measure locates none; but
-the undented meshes still yield 2 to 23 regions, most of them design ranked above the small
-defects, and on the bundled demo the roof dent is not the first region: this is why it is not
-the default yet.
+lies within 3R of it) is 0.75 on the rocker arm, 0.625 on the beetle, 0.5 on the bunny and the
+camel head, 0.375 on the fandisk and spot, where the bending measure locates none; but the
+undented meshes still yield 4 to 33 regions, some of them design (on the Beetle a round bump on
+its midplane) with full confidence and many ranked above the small defects, and on the bundled
+demo the roof dent is not the first region: this is why it is not the default yet. The
+denser lines make it about twice as slow (5 s on the shared Beetle, 39k faces, 36 setups).
 
 A defect is only seen where several lines cross it: the lights' spacing and
 `number_of_offsets` set how small a defect can be found. Design features that are not sharp
@@ -330,7 +338,7 @@ and the lights together, and independent of the mesh's face order.
       \cgalParamDefault{`true`}
     \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::local_residual}
-      \cgalParamDescription{whether the lines are scored by their sideways residual from a local fit and the anomalies grouped around their peaks (see "The local residual" above) rather than by the bending against each line's statistics and grouped into clusters; with it, `minimum_bending` is a sideways offset in mean edge lengths and `Highlight_line_irregularity::max_bending` the largest such offset}
+      \cgalParamDescription{whether the lines are scored by their sideways residual from a local fit and the anomalies grouped around their peaks (see "The local residual" above) rather than by the bending against each line's statistics and grouped into clusters; with it, the spacing of `lights` is only an upper bound (each setup's lights are brought closer until its lines lie at most `w` apart on most of the surface), `minimum_bending` is a sideways offset in mean edge lengths and `Highlight_line_irregularity::max_bending` the largest such offset}
       \cgalParamType{`bool`}
       \cgalParamDefault{`false`}
     \cgalParamNEnd
@@ -565,10 +573,85 @@ OutputIterator detect_highlight_line_irregularities(
       planes.size() * std::size_t(options.orientations * options.offsets);
   (void)total_setups;
 
+  // The highlight distance d (eq. 4, without the division by the spacing) at each vertex
+  // facing the lights of `setup`, and its gradient over the surface (area-weighted mean of
+  // those of the faces whose corners all face them). The lines are its level sets m·s: they
+  // lie s/|grad d| apart on the surface, and a sideways shift r of a line is a change
+  // r·grad(d)/s of its level. Shifting the lights across changes d by a constant only.
+  auto compute_distance_gradient = [&](const HL::Light_setup<GeomTraits>& setup) {
+    const auto z = setup.plane_normal_array();
+    const auto a = setup.base_point_array(), hd = setup.light_direction_array();
+    for (int v = 0; v < nv; ++v) {
+      const Vec3& n = normals[std::size_t(v)];
+      const double facing = dot(n, Vec3{z[0], z[1], z[2]});
+      const double* p = local.point(v);
+      const Vec3 w{p[0] - a[0], p[1] - a[1], p[2] - a[2]};
+      distance_value[std::size_t(v)] = facing > 0.05
+                                           ? dot(cross(w, Vec3{hd[0], hd[1], hd[2]}), n) / facing
+                                           : std::numeric_limits<double>::quiet_NaN();
+      distance_gradient[std::size_t(v)] = Vec3{0, 0, 0};
+      gradient_weight[std::size_t(v)] = 0;
+    }
+    for (std::size_t f = 0; f < nf; ++f) {
+      const auto& c = corners[f];
+      const double d0 = distance_value[std::size_t(c[0])], d1 = distance_value[std::size_t(c[1])],
+                   d2 = distance_value[std::size_t(c[2])];
+      if (!std::isfinite(d0) || !std::isfinite(d1) || !std::isfinite(d2))
+        continue;
+      const double *p0 = local.point(c[0]), *p1 = local.point(c[1]), *p2 = local.point(c[2]);
+      const Vec3 q0{p0[0], p0[1], p0[2]}, q1{p1[0], p1[1], p1[2]}, q2{p2[0], p2[1], p2[2]};
+      const Vec3 face_normal = cross(q1 - q0, q2 - q0);
+      const double twice_area = norm(face_normal);
+      if (!(twice_area > 0))
+        continue;
+      // grad = sum d_i (n x e_i) / 2A, e_i the edge opposite corner i; times the area A.
+      const Vec3 e = d0 * (q2 - q1) + d1 * (q0 - q2) + d2 * (q1 - q0);
+      const Vec3 weighted = (0.5 / twice_area) * cross(face_normal, e);
+      for (int v : c) {
+        distance_gradient[std::size_t(v)] = distance_gradient[std::size_t(v)] + weighted;
+        gradient_weight[std::size_t(v)] += 0.5 * twice_area;
+      }
+    }
+    for (int v = 0; v < nv; ++v)
+      if (gradient_weight[std::size_t(v)] > 0)
+        distance_gradient[std::size_t(v)] =
+            (1 / gradient_weight[std::size_t(v)]) * distance_gradient[std::size_t(v)];
+  };
+
+  // Line density from the mesh (with `local_residual`): a defect is only seen where several
+  // lines of one setup cross it, so the lights are brought closer (never farther apart) until
+  // the lines lie at most `w` apart (s/|grad d|, from the gradient computed last) on three
+  // quarters of the surface facing them: a defect of the detection's size (R <= 3w/2) is then
+  // crossed by about three lines of every setup. The lines crowd where the surface curves
+  // (|grad d| grows with the curvature times the distance to the plane), so the flatter parts
+  // set the spacing, and the cost stays proportional to the facing area over w.
+  const double line_spacing = options.scale * mean_edge;
+  auto with_mesh_spacing = [&](const HL::Light_setup<GeomTraits>& setup) {
+    const auto z = setup.plane_normal_array();
+    std::vector<double> rates;
+    for (int v = 0; v < nv; ++v)
+      if (gradient_weight[std::size_t(v)] > 0 &&
+          dot(normals[std::size_t(v)], Vec3{z[0], z[1], z[2]}) >= minimum_facing)
+        rates.push_back(norm(distance_gradient[std::size_t(v)]));
+    if (rates.empty())
+      return setup;
+    const std::size_t q = rates.size() / 4;
+    std::nth_element(rates.begin(), rates.begin() + std::ptrdiff_t(q), rates.end());
+    const double spacing = line_spacing * rates[q];
+    if (!(spacing > 0) || !std::isfinite(spacing) || !(spacing < setup.spacing_value()))
+      return setup;
+    return HL::Light_setup<GeomTraits>(setup.base_point(), setup.light_direction(),
+                                       setup.plane_normal(), spacing);
+  };
+
   for (const auto& plane : planes)
     for (int o = 0; o < options.orientations; ++o) {
-      const HL::Light_setup<GeomTraits> turned =
+      HL::Light_setup<GeomTraits> turned =
           o == 0 ? plane : plane.rotated(plane.plane_normal(), pi * o / options.orientations);
+      if (options.local_residual) {
+        compute_distance_gradient(turned);
+        turned = with_mesh_spacing(turned);
+      }
       const auto across = turned.index_direction();
       for (int k = 0; k < options.offsets; ++k, ++setup_id) {
         const HL::Light_setup<GeomTraits> shifted =
@@ -579,52 +662,8 @@ OutputIterator detect_highlight_line_irregularities(
 
         if (options.local_residual) {
           const auto z = shifted.plane_normal_array();
-          // The highlight distance d (eq. 4) at each vertex facing the lights, and its gradient
-          // over the surface (area-weighted mean of those of the faces whose corners all face
-          // them): the lines are its level sets m·s, so a sideways shift r of a line is a change
-          // r·grad(d)/s of the level, whatever the spacing of the lines there.
-          {
-            const auto a = shifted.base_point_array(), hd = shifted.light_direction_array();
-            const double spacing = shifted.spacing_value();
-            for (int v = 0; v < nv; ++v) {
-              const Vec3& n = normals[std::size_t(v)];
-              const double facing = dot(n, Vec3{z[0], z[1], z[2]});
-              const double* p = local.point(v);
-              const Vec3 w{p[0] - a[0], p[1] - a[1], p[2] - a[2]};
-              distance_value[std::size_t(v)] =
-                  facing > 0.05 ? dot(cross(w, Vec3{hd[0], hd[1], hd[2]}), n) / facing / spacing
-                                : std::numeric_limits<double>::quiet_NaN();
-              distance_gradient[std::size_t(v)] = Vec3{0, 0, 0};
-              gradient_weight[std::size_t(v)] = 0;
-            }
-            for (std::size_t f = 0; f < nf; ++f) {
-              const auto& c = corners[f];
-              const double d0 = distance_value[std::size_t(c[0])],
-                           d1 = distance_value[std::size_t(c[1])],
-                           d2 = distance_value[std::size_t(c[2])];
-              if (!std::isfinite(d0) || !std::isfinite(d1) || !std::isfinite(d2))
-                continue;
-              const double *p0 = local.point(c[0]), *p1 = local.point(c[1]),
-                           *p2 = local.point(c[2]);
-              const Vec3 q0{p0[0], p0[1], p0[2]}, q1{p1[0], p1[1], p1[2]}, q2{p2[0], p2[1], p2[2]};
-              const Vec3 face_normal = cross(q1 - q0, q2 - q0);
-              const double twice_area = norm(face_normal);
-              if (!(twice_area > 0))
-                continue;
-              // grad = sum d_i (n x e_i) / 2A, e_i the edge opposite corner i; times the area A.
-              const Vec3 e = d0 * (q2 - q1) + d1 * (q0 - q2) + d2 * (q1 - q0);
-              const Vec3 weighted = (0.5 / twice_area) * cross(face_normal, e);
-              for (int v : c) {
-                distance_gradient[std::size_t(v)] = distance_gradient[std::size_t(v)] + weighted;
-                gradient_weight[std::size_t(v)] += 0.5 * twice_area;
-              }
-            }
-            for (int v = 0; v < nv; ++v)
-              if (gradient_weight[std::size_t(v)] > 0)
-                distance_gradient[std::size_t(v)] =
-                    (1 / gradient_weight[std::size_t(v)]) * distance_gradient[std::size_t(v)];
-          }
-
+          // The gradient of the levels: that of the distance over the spacing of this setup.
+          const double level_per_distance = 1 / shifted.spacing_value();
           residuals.resize(lines.size());
           level_residuals.resize(lines.size());
           sample_vertices.resize(lines.size());
@@ -674,7 +713,8 @@ OutputIterator detect_highlight_line_irregularities(
                   !(gradient_weight[std::size_t(compact)] > 0))
                 continue;
               sample_vertices[l][i] = compact;
-              level[i] = dot(residual.residual[i], distance_gradient[std::size_t(compact)]);
+              level[i] = level_per_distance *
+                         dot(residual.residual[i], distance_gradient[std::size_t(compact)]);
               if (std::isfinite(level[i]))
                 pooled.push_back(level[i]);
               else

@@ -209,7 +209,9 @@ struct Peak_region
 //    light setups among the unclaimed anomalies in it (ties: the sum over those setups of
 //    their strongest score);
 // 2. repeatedly, the disc of most evidence is re-centred on the mean of its anomalies (at the
-//    vertex of one of them nearest to it); if its anomalies show in at least
+//    vertex of one of them nearest to it); if its anomalies, without the side lobes of
+//    earlier regions (anomalies on the same line as one of an earlier region, within
+//    `separation` of it and weaker), show in at least
 //    `minimum_setups[centre]` setups it becomes a region and claims them, else it is dropped;
 // 3. a region's faces are those with a vertex within `radius + margin` (Euclidean) of the
 //    centre, reached from it along edges that pass no `barrier` vertex (they are reached, not
@@ -301,7 +303,8 @@ inline std::vector<Peak_region> group_anomalies_around_peaks(
     queue.push({evidence(points[std::size_t(anomalies[i].vertex)], nullptr), i});
   const Vertex_adjacency adjacency(faces, nv);
   std::vector<int> owner(std::size_t(nv), -1);
-  std::vector<std::size_t> members, recentred;
+  std::vector<std::size_t> members, recentred, unexplained;
+  std::unordered_multimap<std::size_t, std::size_t> lobe_source; // line -> anomaly
   std::vector<int> front;
   while (!queue.empty()) {
     const Entry top = queue.top();
@@ -332,24 +335,50 @@ inline std::vector<Peak_region> group_anomalies_around_peaks(
     if (owner[std::size_t(centre)] >= 0)
       continue; // inside an earlier region: its anomalies are another region's surroundings
     const Vec3 cc = points[std::size_t(centre)];
-    const Evidence final_evidence = evidence(cc, &recentred);
-    // Non-maximum suppression: no centre within `separation` of a region more than twice as
-    // strong (the fit around a defect leaves weaker side lobes beyond its disc).
-    bool suppressed = false;
+    evidence(cc, &recentred); // the anomalies of the re-centred disc
+    // Side lobes: the fit around a defect pulls the samples 3w/2 to 4w along the same lines
+    // the other way, which leaves weaker peaks there. An anomaly is such a lobe if an earlier
+    // region has a stronger anomaly on the same line within `separation` of it; the candidate
+    // must show in enough setups without its lobes. (A defect next to a stronger feature keeps
+    // the anomalies of its lines that do not cross the feature: a region more than twice as
+    // strong nearby no longer suppresses it, as it did before.)
+    lobe_source.clear();
     for (const Peak_region& r : regions) {
       const Vec3 d = points[std::size_t(r.centre)] - cc;
-      suppressed = suppressed || (dot(d, d) < separation * separation &&
-                                  2 * final_evidence.strength < r.strength);
+      if (dot(d, d) < std::pow(separation + 2 * radius, 2))
+        for (std::size_t j : r.anomalies)
+          lobe_source.emplace(anomalies[j].line, j);
     }
-    if (suppressed)
-      continue;
-    if (final_evidence.setups < (std::max)(std::size_t(1), minimum_setups[std::size_t(centre)]))
+    unexplained.clear();
+    for (std::size_t i : recentred) {
+      bool lobe = false;
+      const auto range = lobe_source.equal_range(anomalies[i].line);
+      for (auto it = range.first; it != range.second && !lobe; ++it) {
+        const Anomaly& source = anomalies[it->second];
+        const Vec3 d =
+            points[std::size_t(source.vertex)] - points[std::size_t(anomalies[i].vertex)];
+        lobe = dot(d, d) <= separation * separation && source.score > anomalies[i].score;
+      }
+      if (!lobe)
+        unexplained.push_back(i);
+    }
+    best_of_setup.clear();
+    for (std::size_t i : unexplained)
+      best_of_setup.emplace_back(anomalies[i].setup, anomalies[i].score);
+    std::sort(best_of_setup.begin(), best_of_setup.end());
+    Evidence own;
+    for (std::size_t j = 0; j < best_of_setup.size(); ++j)
+      if (j + 1 == best_of_setup.size() || best_of_setup[j + 1].first != best_of_setup[j].first) {
+        ++own.setups;
+        own.strength += best_of_setup[j].second;
+      }
+    if (own.setups < (std::max)(std::size_t(1), minimum_setups[std::size_t(centre)]))
       continue; // not enough evidence: this candidate is dropped, its anomalies stay
     Peak_region region;
     region.centre = centre;
     region.anomalies = recentred;
-    region.setups = final_evidence.setups;
-    region.strength = final_evidence.strength;
+    region.setups = own.setups;
+    region.strength = own.strength;
     for (std::size_t i : recentred)
       claimed[i] = 1;
     within(cc, neighbourhood_radius, [&](std::size_t i) { region.neighbourhood.push_back(i); });
