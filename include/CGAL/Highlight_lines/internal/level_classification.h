@@ -87,7 +87,8 @@ public:
   Level_classifier(const Local_mesh<TriangleMesh>& lm, const Vertex_normals& vn,
                    const std::array<double, 3>& a, const std::array<double, 3>& h,
                    const std::array<double, 3>& z, double s)
-      : lm_(lm), vn_(vn), a_(a), h_(h), z_(z),
+      : lm_(lm), vn_(vn), points_(lm.xyz.data()), normals_(vn.normal.data()),
+        bounds_(vn.bound.data()), a_(a), h_(h), z_(z),
         s_(s), habs_{std::abs(h[0]), std::abs(h[1]), std::abs(h[2])},
         zabs_sum_(std::abs(z[0]) + std::abs(z[1]) + std::abs(z[2])),
         inverse_s_(1 / s), habs_pair_{std::abs(h[1]) + std::abs(h[2]),
@@ -138,9 +139,9 @@ public:
   BOOST_FORCEINLINE bool classify_common_case(int v, bool facing_side_only,
                                               Common_case& result) const
   {
-    const double* n = &vn_.normal[3 * std::size_t(v)];
-    const double* p = lm_.point(v);
-    const double bound_factor = vn_.bound[std::size_t(v)]; // NaN: not certain
+    const double* n = normals_ + 3 * std::size_t(v);
+    const double* p = points_ + 3 * std::size_t(v);
+    const double bound_factor = bounds_[std::size_t(v)]; // NaN: not certain
     const double den = z_[0] * n[0] + z_[1] * n[1] + z_[2] * n[2];
     const double den_bound = bound_factor * zabs_sum_;
     const double w[3] = {p[0] - a_[0], p[1] - a_[1], p[2] - a_[2]};
@@ -336,6 +337,8 @@ private:
 
   const Local_mesh<TriangleMesh>& lm_;
   const Vertex_normals& vn_;
+  // The arrays of the common case, read without going through the containers.
+  const double *points_, *normals_, *bounds_;
   std::array<double, 3> a_, h_, z_;
   double s_;
   std::array<double, 3> habs_;
@@ -418,17 +421,21 @@ void classify_vertices(const Level_classifier<TriangleMesh>& classifier, std::si
   std::vector<Part> parts(chunks.size());
   for_each_chunk<ConcurrencyTag>(chunks, [&](std::size_t c, std::size_t b, std::size_t e) {
     Part& part = parts[c];
-    // A copy local to the pass: the stores into keys and distances cannot alias its constants
-    // (the lights), which then stay in registers.
+    // Copies local to the pass: the stores into keys and distances cannot alias its
+    // constants (the lights, the arrays and the options), which then stay in registers.
     const Level_classifier<TriangleMesh> local_classifier = classifier;
+    const bool local_facing_side_only = facing_side_only;
+    Vertex_level* const level_out = levels != nullptr ? levels->data() : nullptr;
+    long long* const key_out = keys.data();
+    double* const distance_out = distances.data();
     for (std::size_t v = b; v < e; ++v) {
       typename Level_classifier<TriangleMesh>::Common_case common;
-      if (local_classifier.classify_common_case(int(v), facing_side_only, common)) {
+      if (local_classifier.classify_common_case(int(v), local_facing_side_only, common)) {
         // Strictly inside a band, or turned away: no vertex node, defined or not counted.
-        if (levels != nullptr)
-          (*levels)[v] = common.level();
-        keys[v] = common.key();
-        distances[v] = common.turned_away ? 0.0 : common.d;
+        if (level_out != nullptr)
+          level_out[v] = common.level();
+        key_out[v] = common.key();
+        distance_out[v] = common.turned_away ? 0.0 : common.d;
         continue;
       }
       const Vertex_level l = classifier.classify(int(v), part.stats, facing_side_only);
