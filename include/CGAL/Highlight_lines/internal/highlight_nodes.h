@@ -12,7 +12,6 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
-#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <vector>
@@ -84,7 +83,6 @@ struct Highlight_nodes
   // edge order; vertex nodes follow, in vertex order.
   std::vector<int> edge_first_node;
   std::vector<int> vertex_node; // per model vertex: its node id, written for vertex nodes only
-  std::vector<std::uint16_t> scan_codes; // work array of find_active_faces(): per model vertex
   std::size_t number_of_edge_nodes = 0;
   // Edges over max_levels_per_edge that lost levels (beyond the facing window), and the nodes
   // they would have carried there.
@@ -172,62 +170,25 @@ inline bool edge_meets_window(long long key_a, long long key_b, const Level_wind
   return low <= high && (!(low & 1) || low < high);
 }
 
-// A 16-bit summary of a vertex key for the scan of find_active_faces(): an eighth of the bytes
-// of the keys, so that the codes of a large mesh stay in cache while the faces stream their
-// corners. A face whose three corners have the same odd code carries nothing of the window
-// (the converse need not hold: the scan checks the other faces on their keys).
-// A defined band is clamped to [2·lowest - 1, 2·highest + 1] (corners all below, or all above,
-// the window have no level of it between them), then offset by t = band - 2·lowest + 2 >= 1,
-// odd with the band; the code is t, plus 2^15 if the normal points away from the light plane,
-// so that equal codes mean equal clamped bands on one side. An undefined key has the odd code
-// 2^15 - 1; a band with t >= 2^15 - 1 (a window of over 16,000 levels) the even code 0, which
-// never rejects a face.
-typedef std::uint16_t Face_scan_code;
-
-inline Face_scan_code face_scan_code(long long key, const Level_window& window)
-{
-  constexpr long long side_offset = 1LL << 15;
-  if (key == undefined_key)
-    return Face_scan_code(side_offset - 1);
-  const long long band =
-      (std::min)((std::max)(key_band(key), 2 * window.lowest - 1), 2 * window.highest + 1);
-  const long long t = band - 2 * window.lowest + 2;
-  if (t < 1 || t >= side_offset - 1) // t < 1: an empty window, where no face is active
-    return 0;
-  return Face_scan_code(t + (key > key_side_offset / 2 ? side_offset : 0));
-}
-
 // The faces that can carry a node, a segment or a highlight edge of the window, in face order.
 // The others (their three corners strictly inside one level band, or no level of the window
 // between their corners) carry none: a segment inside a face lies at a level m with 2m between
 // the bands of two of its corners, a node on a face edge between those of its ends (and edges
-// trimmed beyond the facing window still have levels of the window strictly inside). Most
-// faces are rejected on the scan codes of their corners (see face_scan_code()).
+// trimmed beyond the facing window still have levels of the window strictly inside).
 template <typename ConcurrencyTag, typename TriangleMesh>
 void find_active_faces(const Local_mesh<TriangleMesh>& lm,
                        const std::vector<unsigned char>& owned_edges,
                        const std::vector<long long>& keys, const Level_window& window,
-                       std::vector<Face_scan_code>& scan_codes, std::vector<Active_face>& active)
+                       std::vector<Active_face>& active)
 {
-  const std::size_t nv = lm.number_of_model_vertices;
-  scan_codes.resize(nv);
-  for_each_chunk<ConcurrencyTag>(chunks_for<ConcurrencyTag>(nv, std::size_t(1) << 15),
-                                 [&](std::size_t, std::size_t b, std::size_t e) {
-                                   for (std::size_t v = b; v < e; ++v)
-                                     scan_codes[v] = face_scan_code(keys[v], window);
-                                 });
   const Chunks chunks = chunks_for<ConcurrencyTag>(lm.number_of_model_faces, std::size_t(1) << 15);
   std::vector<std::vector<Active_face>> parts(chunks.size() > 1 ? chunks.size() : 0);
   active.clear();
   for_each_chunk<ConcurrencyTag>(chunks, [&](std::size_t c, std::size_t b, std::size_t e) {
     std::vector<Active_face>& out = parts.empty() ? active : parts[c];
     const std::array<int, 3>* fv = lm.face_vertices.data();
-    const Face_scan_code* code = scan_codes.data();
     const long long* k = keys.data();
     for (std::size_t f = b; f < e; ++f) {
-      const unsigned c0 = code[fv[f][0]];
-      if (c0 == code[fv[f][1]] && c0 == code[fv[f][2]] && (c0 & 1u))
-        continue;
       const std::array<long long, 3> corner_keys = {k[fv[f][0]], k[fv[f][1]], k[fv[f][2]]};
       const long long k0 = corner_keys[0];
       if (k0 == corner_keys[1] && k0 == corner_keys[2] && (k0 & 1))
@@ -323,8 +284,7 @@ void compute_highlight_nodes(const Local_mesh<TriangleMesh>& lm,
                              const std::vector<int>& on_level_vertices, double spacing,
                              const Level_window& window, Highlight_nodes& out)
 {
-  find_active_faces<ConcurrencyTag>(lm, owned_edges, keys, window, out.scan_codes,
-                                    out.active_faces);
+  find_active_faces<ConcurrencyTag>(lm, owned_edges, keys, window, out.active_faces);
   // Stale entries are never read: no per-sweep initialisation.
   out.edge_first_node.resize(lm.edge_vertices.size());
   out.vertex_node.resize(lm.number_of_model_vertices);
