@@ -666,8 +666,18 @@ private:
     levels_ = visible_levels();
     const auto model = sweeper_->compute(
         *lights_, HLP::combine(HLP::level_range(levels_), HLP::facing_side_only(true)));
-    lines_.clear();
-    model.polylines(std::back_inserter(lines_));
+    // As model.polylines(), into the polylines of the previous update: their memory is reused.
+    const auto& nodes = model.nodes();
+    lines_.resize(model.lines().size());
+    for (std::size_t i = 0; i < lines_.size(); ++i) {
+      const auto& line = model.lines()[i];
+      std::vector<Point>& polyline = lines_[i];
+      polyline.clear();
+      for (std::size_t n : line.nodes)
+        polyline.push_back(nodes[n].point);
+      if (line.is_closed && !line.nodes.empty())
+        polyline.push_back(nodes[line.nodes.front()].point);
+    }
     if (distance_field_wanted_)
       update_distances();
     else

@@ -209,13 +209,16 @@ public:
     std::size_t kept = traced.new_order.size();
     while (kept > 0 && traced.degree[std::size_t(traced.new_order[kept - 1])] == 0)
       --kept;
-    std::vector<typename Model::Node> model_nodes(kept);
+    // Built in place (no value-initialised nodes to overwrite: one write of the memory).
+    std::vector<typename Model::Node> model_nodes;
+    model_nodes.reserve(kept);
     for (std::size_t i = 0; i < kept; ++i) {
-      const internal::Raw_node& raw = nodes.nodes[std::size_t(traced.new_order[i])];
-      typename Model::Node& node = model_nodes[i];
+      const int old_id = traced.new_order[i];
+      const internal::Raw_node& raw = nodes.nodes[std::size_t(old_id)];
+      typename Model::Node& node = model_nodes.emplace_back();
       node.point = typename Gt::Point_3(raw.point[0], raw.point[1], raw.point[2]);
       node.level = raw.level;
-      node.degree = std::size_t(traced.degree[std::size_t(traced.new_order[i])]);
+      node.degree = std::size_t(traced.degree[std::size_t(old_id)]);
       if (raw.edge >= 0) {
         node.halfedge = mesh_.edge_halfedges[std::size_t(raw.edge)];
         node.parameter = raw.parameter;

@@ -20,6 +20,14 @@
 #include <limits>
 #include <vector>
 
+// The common case of the classification two vertices at a time (see
+// Level_classifier::classify_common_case_pair()) where GCC's vector extensions map to SSE2;
+// elsewhere one vertex at a time, with the same results.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__SSE2__) &&                               \
+    !defined(CGAL_HIGHLIGHT_LINES_NO_TWO_LANES)
+#define CGAL_HIGHLIGHT_LINES_TWO_LANES
+#endif
+
 namespace CGAL {
 namespace Highlight_lines {
 namespace internal {
@@ -87,7 +95,8 @@ public:
   Level_classifier(const Local_mesh<TriangleMesh>& lm, const Vertex_normals& vn,
                    const std::array<double, 3>& a, const std::array<double, 3>& h,
                    const std::array<double, 3>& z, double s)
-      : lm_(lm), vn_(vn), a_(a), h_(h), z_(z),
+      : lm_(lm), vn_(vn), points_(lm.xyz.data()), normals_(vn.normal.data()),
+        bounds_(vn.bound.data()), a_(a), h_(h), z_(z),
         s_(s), habs_{std::abs(h[0]), std::abs(h[1]), std::abs(h[2])},
         zabs_sum_(std::abs(z[0]) + std::abs(z[1]) + std::abs(z[2])),
         inverse_s_(1 / s), habs_pair_{std::abs(h[1]) + std::abs(h[2]),
@@ -138,9 +147,9 @@ public:
   BOOST_FORCEINLINE bool classify_common_case(int v, bool facing_side_only,
                                               Common_case& result) const
   {
-    const double* n = &vn_.normal[3 * std::size_t(v)];
-    const double* p = lm_.point(v);
-    const double bound_factor = vn_.bound[std::size_t(v)]; // NaN: not certain
+    const double* n = normals_ + 3 * std::size_t(v);
+    const double* p = points_ + 3 * std::size_t(v);
+    const double bound_factor = bounds_[std::size_t(v)]; // NaN: not certain
     const double den = z_[0] * n[0] + z_[1] * n[1] + z_[2] * n[2];
     const double den_bound = bound_factor * zabs_sum_;
     const double w[3] = {p[0] - a_[0], p[1] - a_[1], p[2] - a_[2]};
@@ -180,7 +189,72 @@ public:
     return true;
   }
 
+#ifdef CGAL_HIGHLIGHT_LINES_TWO_LANES
+  // classify_common_case() for vertices v and v + 1 at once, in the two lanes of SSE2 vectors:
+  // the same operations on the same doubles, hence the same results, in about half the
+  // instructions (the pass is bound by them). floor(q) is taken as r - (r > q) with r = q
+  // rounded to an integer by adding and subtracting 1.5 * 2^52 (exact for |q| <= 2^49, in any
+  // rounding mode r is floor(q) or ceil(q)). Bit i of the result: lane i is a common case.
+  BOOST_FORCEINLINE unsigned classify_common_case_pair(std::size_t v, bool facing_side_only,
+                                                       Common_case result[2]) const
+  {
+    typedef double Lanes __attribute__((vector_size(16)));
+    typedef long long Masks __attribute__((vector_size(16)));
+    const double* n = normals_ + 3 * v;
+    const double* p = points_ + 3 * v;
+    const Masks magnitude_bits = {0x7fffffffffffffffLL, 0x7fffffffffffffffLL};
+    auto magnitude = [&](Lanes x) { return Lanes(Masks(x) & magnitude_bits); };
+    auto lanes = [](double x) { return Lanes{x, x}; };
+    const Lanes n0 = {n[0], n[3]}, n1 = {n[1], n[4]}, n2 = {n[2], n[5]};
+    const Lanes p0 = {p[0], p[3]}, p1 = {p[1], p[4]}, p2 = {p[2], p[5]};
+    const Lanes bound_factor = {bounds_[v], bounds_[v + 1]};
+    const Lanes den = lanes(z_[0]) * n0 + lanes(z_[1]) * n1 + lanes(z_[2]) * n2;
+    const Lanes den_bound = bound_factor * lanes(zabs_sum_);
+    const Lanes w0 = p0 - lanes(a_[0]), w1 = p1 - lanes(a_[1]), w2 = p2 - lanes(a_[2]);
+    const Lanes wm0 = magnitude(p0) + lanes(std::abs(a_[0])),
+                wm1 = magnitude(p1) + lanes(std::abs(a_[1])),
+                wm2 = magnitude(p2) + lanes(std::abs(a_[2]));
+    const Lanes x0 = w1 * lanes(h_[2]) - w2 * lanes(h_[1]),
+                x1 = w2 * lanes(h_[0]) - w0 * lanes(h_[2]),
+                x2 = w0 * lanes(h_[1]) - w1 * lanes(h_[0]);
+    const Lanes xm =
+        wm0 * lanes(habs_pair_[0]) + wm1 * lanes(habs_pair_[1]) + wm2 * lanes(habs_pair_[2]);
+    const Lanes num = x0 * n0 + x1 * n1 + x2 * n2;
+    const Lanes num_bound = bound_factor * xm;
+    const Masks side_certain = (magnitude(den) > den_bound) & (den_bound > lanes(min_magnitude));
+    const Masks facing = den > lanes(0.0);
+    const Lanes d = num / den;
+    const Lanes scaled = d * lanes(inverse_s_);
+    // std::min(guess_limit, x) and std::max(-guess_limit, x), NaN to guess_limit alike.
+    const Lanes below = (scaled < lanes(guess_limit)) ? scaled : lanes(guess_limit);
+    const Lanes q = (lanes(-guess_limit) < below) ? below : lanes(-guess_limit);
+    const Lanes rounded = (q + lanes(rounding_shift)) - lanes(rounding_shift);
+    const Lanes k = rounded - ((rounded > q) ? lanes(1.0) : lanes(0.0));
+    const Lanes ms0 = k * lanes(s_), ms1 = (k + lanes(1.0)) * lanes(s_);
+    const Lanes e0 = num - ms0 * den, e1 = num - ms1 * den;
+    const Lanes b0 = num_bound + magnitude(ms0) * den_bound,
+                b1 = num_bound + magnitude(ms1) * den_bound;
+    const Masks bracket = (magnitude(e0) > b0) & (magnitude(e1) > b1) &
+                          (b0 > lanes(min_magnitude)) & (b1 > lanes(min_magnitude)) &
+                          (b0 < lanes(infinity)) & (b1 < lanes(infinity)) &
+                          ~((e0 > lanes(0.0)) ^ facing) & ((e1 > lanes(0.0)) ^ facing) &
+                          (magnitude(scaled) < lanes(guess_limit));
+    const Masks turned_away = facing_side_only ? ~facing : Masks{0, 0};
+    const Masks common = side_certain & (turned_away | bracket);
+    unsigned found = 0;
+    for (int i = 0; i < 2; ++i) {
+      result[i].k = static_cast<long long>(k[i]);
+      result[i].d = d[i];
+      result[i].facing = facing[i] != 0;
+      result[i].turned_away = turned_away[i] != 0;
+      found |= unsigned(common[i] != 0) << i;
+    }
+    return found;
+  }
+#endif
+
 private:
+  static constexpr double rounding_shift = 6755399441055744.0; // 1.5 * 2^52
   static constexpr double guess_limit = double(1LL << 49);
   static constexpr double infinity = std::numeric_limits<double>::infinity();
 
@@ -336,6 +410,8 @@ private:
 
   const Local_mesh<TriangleMesh>& lm_;
   const Vertex_normals& vn_;
+  // The arrays of the common case, read without going through the containers.
+  const double *points_, *normals_, *bounds_;
   std::array<double, 3> a_, h_, z_;
   double s_;
   std::array<double, 3> habs_;
@@ -418,29 +494,58 @@ void classify_vertices(const Level_classifier<TriangleMesh>& classifier, std::si
   std::vector<Part> parts(chunks.size());
   for_each_chunk<ConcurrencyTag>(chunks, [&](std::size_t c, std::size_t b, std::size_t e) {
     Part& part = parts[c];
-    // A copy local to the pass: the stores into keys and distances cannot alias its constants
-    // (the lights), which then stay in registers.
+    // Copies local to the pass: the stores into keys and distances cannot alias its
+    // constants (the lights, the arrays and the options), which then stay in registers.
     const Level_classifier<TriangleMesh> local_classifier = classifier;
-    for (std::size_t v = b; v < e; ++v) {
-      typename Level_classifier<TriangleMesh>::Common_case common;
-      if (local_classifier.classify_common_case(int(v), facing_side_only, common)) {
-        // Strictly inside a band, or turned away: no vertex node, defined or not counted.
-        if (levels != nullptr)
-          (*levels)[v] = common.level();
-        keys[v] = common.key();
-        distances[v] = common.turned_away ? 0.0 : common.d;
-        continue;
-      }
+    const bool local_facing_side_only = facing_side_only;
+    Vertex_level* const level_out = levels != nullptr ? levels->data() : nullptr;
+    long long* const key_out = keys.data();
+    double* const distance_out = distances.data();
+    auto store_common_case = [&](std::size_t v,
+                                 const typename Level_classifier<TriangleMesh>::Common_case& c) {
+      // Strictly inside a band, or turned away: no vertex node, defined or not counted.
+      if (level_out != nullptr)
+        level_out[v] = c.level();
+      key_out[v] = c.key();
+      distance_out[v] = c.turned_away ? 0.0 : c.d;
+    };
+    auto classify_in_general = [&](std::size_t v) {
       const Vertex_level l = classifier.classify(int(v), part.stats, facing_side_only);
-      if (levels != nullptr)
-        (*levels)[v] = l;
+      if (level_out != nullptr)
+        level_out[v] = l;
       const long long key = level_key(l);
-      keys[v] = key;
-      distances[v] = l.distance;
+      key_out[v] = key;
+      distance_out[v] = l.distance;
       if (!(key & 1))
         part.on_level.push_back(int(v)); // even keys: defined, on a level
       part.undefined += l.normal_side == 0;
       part.out_of_range += l.out_of_range;
+    };
+    std::size_t v = b;
+#ifdef CGAL_HIGHLIGHT_LINES_TWO_LANES
+    for (; v + 1 < e; v += 2) {
+      typename Level_classifier<TriangleMesh>::Common_case common[2];
+      const unsigned found =
+          local_classifier.classify_common_case_pair(v, local_facing_side_only, common);
+      if (found == 3) {
+        store_common_case(v, common[0]);
+        store_common_case(v + 1, common[1]);
+        continue;
+      }
+      for (std::size_t i = 0; i < 2; ++i) {
+        if (found & (1u << i))
+          store_common_case(v + i, common[i]);
+        else
+          classify_in_general(v + i);
+      }
+    }
+#endif
+    for (; v < e; ++v) {
+      typename Level_classifier<TriangleMesh>::Common_case common;
+      if (local_classifier.classify_common_case(int(v), local_facing_side_only, common))
+        store_common_case(v, common);
+      else
+        classify_in_general(v);
     }
   });
   summary.undefined = summary.out_of_range = 0;
