@@ -71,22 +71,39 @@ std::vector<HB::Irregularity> detect_local_residual(const HB::Mesh& mesh, bool a
   return found;
 }
 
-// Recall and precision over seeds 1..8, four defects of radius 5 ē per hood.
-HB::Detection_score score_on_hoods(double height_in_edges)
+// Recall and precision over seeds 1..8, four defects of radius 5 ē per hood, and how many
+// defects a region is located at, for `detect(mesh)`.
+struct Hood_tally
 {
-  HB::Detection_score total;
+  HB::Detection_score score;
+  std::size_t located = 0;
+};
+
+template <typename Detect>
+Hood_tally tally_on_hoods(double height_in_edges, Detect detect)
+{
+  Hood_tally total;
   for (unsigned seed = 1; seed <= 8; ++seed) {
     HB::Mesh mesh = smooth_hood(seed);
     std::vector<HB::Injected_defect> defects;
     if (height_in_edges > 0)
       defects = HB::inject_defects(mesh, 4, 5.0, height_in_edges, seed, [](auto) { return true; });
-    const HB::Detection_score s = HB::match(mesh, defects, detect_from_above(mesh));
-    total.defects += s.defects;
-    total.found_defects += s.found_defects;
-    total.regions += s.regions;
-    total.true_regions += s.true_regions;
+    const std::vector<HB::Irregularity> found = detect(mesh);
+    const HB::Detection_score s = HB::match(mesh, defects, found);
+    total.score.defects += s.defects;
+    total.score.found_defects += s.found_defects;
+    total.score.regions += s.regions;
+    total.score.true_regions += s.true_regions;
+    for (bool l : HB::located_defects(mesh, defects, found))
+      total.located += l;
   }
   return total;
+}
+
+HB::Detection_score score_on_hoods(double height_in_edges)
+{
+  return tally_on_hoods(height_in_edges, [](const HB::Mesh& m) { return detect_from_above(m); })
+      .score;
 }
 
 // --- The bending measure -------------------------------------------------------------------
@@ -516,26 +533,14 @@ TEST(Detection, FindsMostSmallDefectsAnywhereOnSharedCadMeshes)
 TEST(LocalResidual, LocatesSmallDefectsOnHoodsAndNothingElse)
 {
   for (double h : {0.05, 0.02, 0.0}) {
-    std::size_t defects = 0, located = 0, regions = 0, true_regions = 0;
-    for (unsigned seed = 1; seed <= 8; ++seed) {
-      HB::Mesh mesh = smooth_hood(seed);
-      std::vector<HB::Injected_defect> injected;
-      if (h > 0)
-        injected = HB::inject_defects(mesh, 4, 5.0, h, seed, [](auto) { return true; });
-      const auto found = detect_local_residual(mesh, false);
-      const HB::Detection_score s = HB::match(mesh, injected, found);
-      defects += s.defects;
-      regions += s.regions;
-      true_regions += s.true_regions;
-      for (bool l : HB::located_defects(mesh, injected, found))
-        located += l;
-    }
+    const Hood_tally t =
+        tally_on_hoods(h, [](const HB::Mesh& m) { return detect_local_residual(m, false); });
     if (h > 0) {
-      EXPECT_EQ(defects, 32u);
-      EXPECT_GE(double(located) / double(defects), h > 0.03 ? 0.9 : 0.85) << h;
+      EXPECT_EQ(t.score.defects, 32u);
+      EXPECT_GE(double(t.located) / double(t.score.defects), h > 0.03 ? 0.9 : 0.85) << h;
     }
     // At most one region of 30 holds no defect (measured: 33 of 33, 29 of 30, none).
-    EXPECT_LE(regions - true_regions, h > 0 ? 1u : 0u) << h;
+    EXPECT_LE(t.score.regions - t.score.true_regions, h > 0 ? 1u : 0u) << h;
   }
 }
 
@@ -576,24 +581,16 @@ TEST(LocalResidual, RegionsAreSizedToTheDefect)
 // own spacing, 11 of 32).
 TEST(LocalResidual, TakesItsLineDensityFromTheMeshNotFromTheLights)
 {
-  std::size_t defects = 0, located = 0, regions = 0, true_regions = 0;
-  for (unsigned seed = 1; seed <= 8; ++seed) {
-    HB::Mesh mesh = smooth_hood(seed);
-    const auto injected = HB::inject_defects(mesh, 4, 5.0, 0.05, seed, [](auto) { return true; });
+  const Hood_tally t = tally_on_hoods(0.05, [](const HB::Mesh& m) {
     std::vector<HB::Irregularity> found;
     CGAL::detect_highlight_line_irregularities(
-        mesh, HL::default_light_setup(mesh, HLP::number_of_lines(5)), std::back_inserter(found),
+        m, HL::default_light_setup(m, HLP::number_of_lines(5)), std::back_inserter(found),
         HLP::local_residual(HLP::all_sides(false), true));
-    const HB::Detection_score s = HB::match(mesh, injected, found);
-    defects += s.defects;
-    regions += s.regions;
-    true_regions += s.true_regions;
-    for (bool l : HB::located_defects(mesh, injected, found))
-      located += l;
-  }
-  EXPECT_EQ(defects, 32u);
-  EXPECT_GE(located, 29u);
-  EXPECT_LE(regions - true_regions, 1u);
+    return found;
+  });
+  EXPECT_EQ(t.score.defects, 32u);
+  EXPECT_GE(t.located, 29u);
+  EXPECT_LE(t.score.regions - t.score.true_regions, 1u);
 }
 
 // --- Invariances --------------------------------------------------------------------------
