@@ -273,6 +273,17 @@ inline std::vector<Peak_region> group_anomalies_around_peaks(
     }
   };
   std::vector<std::pair<std::size_t, double>> best_of_setup; // (setup, score), reused
+  // The setups of best_of_setup and the sum of the best score of each (sorts it).
+  auto tally_setups = [&best_of_setup]() {
+    std::sort(best_of_setup.begin(), best_of_setup.end());
+    Evidence e;
+    for (std::size_t j = 0; j < best_of_setup.size(); ++j)
+      if (j + 1 == best_of_setup.size() || best_of_setup[j + 1].first != best_of_setup[j].first) {
+        ++e.setups;
+        e.strength += best_of_setup[j].second;
+      }
+    return e;
+  };
   auto evidence = [&](const Vec3& c, std::vector<std::size_t>* members) {
     best_of_setup.clear();
     if (members)
@@ -284,14 +295,7 @@ inline std::vector<Peak_region> group_anomalies_around_peaks(
         members->push_back(i);
       best_of_setup.emplace_back(anomalies[i].setup, anomalies[i].score);
     });
-    std::sort(best_of_setup.begin(), best_of_setup.end());
-    Evidence e;
-    for (std::size_t j = 0; j < best_of_setup.size(); ++j)
-      if (j + 1 == best_of_setup.size() || best_of_setup[j + 1].first != best_of_setup[j].first) {
-        ++e.setups;
-        e.strength += best_of_setup[j].second;
-      }
-    return e;
+    return tally_setups();
   };
   // Lazy greedy: evidence only falls as anomalies are claimed.
   typedef std::pair<Evidence, std::size_t> Entry;
@@ -365,13 +369,7 @@ inline std::vector<Peak_region> group_anomalies_around_peaks(
     best_of_setup.clear();
     for (std::size_t i : unexplained)
       best_of_setup.emplace_back(anomalies[i].setup, anomalies[i].score);
-    std::sort(best_of_setup.begin(), best_of_setup.end());
-    Evidence own;
-    for (std::size_t j = 0; j < best_of_setup.size(); ++j)
-      if (j + 1 == best_of_setup.size() || best_of_setup[j + 1].first != best_of_setup[j].first) {
-        ++own.setups;
-        own.strength += best_of_setup[j].second;
-      }
+    const Evidence own = tally_setups();
     if (own.setups < (std::max)(std::size_t(1), minimum_setups[std::size_t(centre)]))
       continue; // not enough evidence: this candidate is dropped, its anomalies stay
     Peak_region region;
