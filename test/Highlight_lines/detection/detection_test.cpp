@@ -713,15 +713,31 @@ TEST(Detection, ReportsProgressCanBeCancelledAndRunsInParallel)
 #endif
 }
 
+// One dented hood as a Surface_mesh and as a Polyhedron_3 with the same points and faces.
+struct Dented_hood_pair
+{
+  HB::Mesh mesh;
+  test::Polyhedron polyhedron;
+  std::size_t defects = 0;
+
+  Dented_hood_pair()
+  {
+    test::Soup soup = test::grid(40, 2.0 / 40, -1, -1, hood, 0.3, 7);
+    mesh = test::to_mesh<HB::Mesh>(soup);
+    defects = HB::inject_defects(mesh, 1, 4.0, 0.5, 7, [](auto) { return true; }).size();
+    for (auto v : vertices(mesh))
+      soup.points[std::size_t(v)] = mesh.point(v);
+    polyhedron = test::to_mesh<test::Polyhedron>(soup);
+  }
+};
+
 // The opt-in local residual gives the same regions on a Polyhedron_3 as on a Surface_mesh.
 TEST(LocalResidual, ActsAlikeOnPolyhedronAndSurfaceMesh)
 {
-  test::Soup soup = test::grid(40, 2.0 / 40, -1, -1, hood, 0.3, 7);
-  HB::Mesh mesh = test::to_mesh<HB::Mesh>(soup);
-  ASSERT_EQ(HB::inject_defects(mesh, 1, 4.0, 0.5, 7, [](auto) { return true; }).size(), 1u);
-  for (auto v : vertices(mesh))
-    soup.points[std::size_t(v)] = mesh.point(v);
-  const test::Polyhedron polyhedron = test::to_mesh<test::Polyhedron>(soup);
+  const Dented_hood_pair pair;
+  ASSERT_EQ(pair.defects, 1u);
+  const HB::Mesh& mesh = pair.mesh;
+  const test::Polyhedron& polyhedron = pair.polyhedron;
   const auto lights = HL::default_light_setup(mesh, HLP::number_of_lines(30));
   std::vector<HB::Irregularity> a;
   std::vector<HL::Highlight_line_irregularity<test::Polyhedron>> b;
@@ -741,12 +757,10 @@ TEST(LocalResidual, ActsAlikeOnPolyhedronAndSurfaceMesh)
 
 TEST(Detection, SweepOptionsActAlikeOnPolyhedronAndSurfaceMesh)
 {
-  test::Soup soup = test::grid(40, 2.0 / 40, -1, -1, hood, 0.3, 7);
-  HB::Mesh mesh = test::to_mesh<HB::Mesh>(soup);
-  ASSERT_EQ(HB::inject_defects(mesh, 1, 4.0, 0.5, 7, [](auto) { return true; }).size(), 1u);
-  for (auto v : vertices(mesh))
-    soup.points[std::size_t(v)] = mesh.point(v);
-  const test::Polyhedron polyhedron = test::to_mesh<test::Polyhedron>(soup);
+  const Dented_hood_pair pair;
+  ASSERT_EQ(pair.defects, 1u);
+  const HB::Mesh& mesh = pair.mesh;
+  const test::Polyhedron& polyhedron = pair.polyhedron;
   const auto lights = HL::default_light_setup(mesh, HLP::number_of_lines(30));
   for (bool all_sides : {false, true}) {
     std::vector<double> progress_sm, progress_ph;

@@ -316,13 +316,9 @@ struct Robust_statistics
   std::size_t count = 0;
 };
 
-inline Robust_statistics robust_statistics(const std::vector<double>& values)
+// Median and normalised median absolute deviation of `v` (reordered; may be empty).
+inline Robust_statistics median_and_deviation(std::vector<double>& v)
 {
-  std::vector<double> v;
-  v.reserve(values.size());
-  for (double x : values)
-    if (x >= 0)
-      v.push_back(x);
   Robust_statistics stats;
   stats.count = v.size();
   if (v.empty())
@@ -342,6 +338,16 @@ inline Robust_statistics robust_statistics(const std::vector<double>& values)
   return stats;
 }
 
+inline Robust_statistics robust_statistics(const std::vector<double>& values)
+{
+  std::vector<double> v;
+  v.reserve(values.size());
+  for (double x : values)
+    if (x >= 0)
+      v.push_back(x);
+  return median_and_deviation(v);
+}
+
 // Median and normalised median absolute deviation of the finite entries of `values` (of any
 // sign).
 inline Robust_statistics robust_statistics_signed(const std::vector<double>& values)
@@ -351,23 +357,7 @@ inline Robust_statistics robust_statistics_signed(const std::vector<double>& val
   for (double x : values)
     if (std::isfinite(x))
       v.push_back(x);
-  Robust_statistics stats;
-  stats.count = v.size();
-  if (v.empty())
-    return stats;
-  auto median_of = [](std::vector<double>& a) {
-    const std::size_t mid = a.size() / 2;
-    std::nth_element(a.begin(), a.begin() + std::ptrdiff_t(mid), a.end());
-    double m = a[mid];
-    if (a.size() % 2 == 0)
-      m = 0.5 * (m + *std::max_element(a.begin(), a.begin() + std::ptrdiff_t(mid)));
-    return m;
-  };
-  stats.median = median_of(v);
-  for (double& x : v)
-    x = std::abs(x - stats.median);
-  stats.deviation = 1.4826 * median_of(v);
-  return stats;
+  return median_and_deviation(v);
 }
 
 } // namespace internal
