@@ -1206,31 +1206,62 @@ private:
   // Factorisations of free subsystems
 
   // The symbolic analysis (fill-reducing ordering, supernodes) depends on the pattern of P
-  // only; it is redone when the pattern changes.
-  bool is_analyzed(const Sparse_matrix& Q) const
+  // only, and serves every P whose pattern it contains (the entries P lacks are factorised as
+  // zeros). Whether it contains Q's pattern; if so, and `positions` is given, the position in
+  // the analysed pattern of each entry of Q. Both patterns have increasing rows in each column.
+  bool is_analyzed(const Sparse_matrix& Q, std::vector<int>* positions = nullptr) const
   {
-    return analyzed_outer_.size() == static_cast<std::size_t>(Q.cols() + 1) &&
-           std::equal(analyzed_outer_.begin(), analyzed_outer_.end(), Q.outerIndexPtr()) &&
-           analyzed_inner_.size() == static_cast<std::size_t>(Q.nonZeros()) &&
-           std::equal(analyzed_inner_.begin(), analyzed_inner_.end(), Q.innerIndexPtr());
+    const int n = static_cast<int>(Q.cols());
+    if (analyzed_outer_.size() != static_cast<std::size_t>(n + 1))
+      return false;
+    if (positions)
+      positions->resize(static_cast<std::size_t>(Q.nonZeros()));
+    const int* outer = Q.outerIndexPtr();
+    const int* inner = Q.innerIndexPtr();
+    for (int j = 0; j < n; ++j) {
+      int a = analyzed_outer_[j];
+      for (int p = outer[j]; p < outer[j + 1]; ++p) {
+        while (a < analyzed_outer_[j + 1] && analyzed_inner_[a] < inner[p])
+          ++a;
+        if (a == analyzed_outer_[j + 1] || analyzed_inner_[a] != inner[p])
+          return false;
+        if (positions)
+          (*positions)[p] = a;
+      }
+    }
+    return true;
   }
 
+  // Analyses a new pattern: the union of P's and the last one's if that is at most a quarter
+  // larger than P's (a fairing's programs gain and lose a few entries from one iteration to
+  // the next, so the union soon contains them all), else P's alone.
   void update_analysis()
   {
     const Sparse_matrix& Q = problem_.Q();
     const int n = static_cast<int>(Q.cols());
-    if (is_analyzed(Q))
+    if (is_analyzed(Q, &analyzed_position_))
       return;
-    Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> permutation;
-    // Q is stored whole (both triangles and the diagonal), as Eigen's AMD routine wants it:
-    // a copy of it saves the symmetrisation of Eigen::AMDOrdering.
     Sparse_matrix pattern = Q;
+    if (analyzed_outer_.size() == static_cast<std::size_t>(n + 1)) {
+      Sparse_matrix last(n, n);
+      last.resizeNonZeros(static_cast<Eigen::Index>(analyzed_inner_.size()));
+      std::copy(analyzed_outer_.begin(), analyzed_outer_.end(), last.outerIndexPtr());
+      std::copy(analyzed_inner_.begin(), analyzed_inner_.end(), last.innerIndexPtr());
+      std::fill(last.valuePtr(), last.valuePtr() + last.nonZeros(), 1.);
+      Sparse_matrix joined = Q.cwiseAbs() + last;
+      if (double(joined.nonZeros()) <= 1.25 * double(Q.nonZeros()))
+        pattern = std::move(joined);
+    }
+    Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> permutation;
+    // The pattern is stored whole (both triangles and the diagonal), as Eigen's AMD routine
+    // wants it: a copy of it saves the symmetrisation of Eigen::AMDOrdering.
+    analyzed_outer_.assign(pattern.outerIndexPtr(), pattern.outerIndexPtr() + n + 1);
+    analyzed_inner_.assign(pattern.innerIndexPtr(), pattern.innerIndexPtr() + pattern.nonZeros());
     Eigen::internal::minimum_degree_ordering(pattern, permutation);
     // AMD returns, for each elimination position, the variable eliminated there.
     const std::vector<int> ordering(permutation.indices().data(), permutation.indices().data() + n);
-    ldlt_.analyze(n, Q.outerIndexPtr(), Q.innerIndexPtr(), ordering);
-    analyzed_outer_.assign(Q.outerIndexPtr(), Q.outerIndexPtr() + n + 1);
-    analyzed_inner_.assign(Q.innerIndexPtr(), Q.innerIndexPtr() + Q.nonZeros());
+    ldlt_.analyze(n, analyzed_outer_.data(), analyzed_inner_.data(), ordering);
+    is_analyzed(Q, &analyzed_position_); // contained by construction: fills the positions
   }
 
   // Factorises the matrix K_F that is P on the free variables F = {i : is_free[i]} and
@@ -1243,17 +1274,16 @@ private:
     update_analysis();
     const Sparse_matrix& Q = problem_.Q();
     const int n = static_cast<int>(Q.cols());
-    masked_values_.resize(static_cast<std::size_t>(Q.nonZeros()));
+    masked_values_.assign(analyzed_inner_.size(), 0.);
     const int* outer = Q.outerIndexPtr();
     const int* inner = Q.innerIndexPtr();
     const double* values = Q.valuePtr();
     for (int j = 0; j < n; ++j)
       for (int p = outer[j]; p < outer[j + 1]; ++p) {
         const int i = inner[p];
-        if (i == j)
-          masked_values_[p] = is_free[j] ? values[p] : (values[p] > 0. ? values[p] : 1.);
-        else
-          masked_values_[p] = (is_free[i] && is_free[j]) ? values[p] : 0.;
+        masked_values_[analyzed_position_[p]] =
+            i == j ? (is_free[j] ? values[p] : (values[p] > 0. ? values[p] : 1.))
+                   : ((is_free[i] && is_free[j]) ? values[p] : 0.);
       }
     ++report.factorizations;
     factored_free_ = is_free;
@@ -2186,8 +2216,9 @@ private:
   std::size_t gradient_projection_minimum_size_ = 2000;
   double gradient_projection_budget_ = 1.;
 
-  // The pattern the symbolic analysis of ldlt_ is for.
-  std::vector<int> analyzed_outer_, analyzed_inner_;
+  // The pattern the symbolic analysis of ldlt_ is for, and the position in it of each entry
+  // of the current P.
+  std::vector<int> analyzed_outer_, analyzed_inner_, analyzed_position_;
 
   // The last factorisation and the free set it is for.
   internal::Supernodal_LDLT ldlt_;

@@ -312,6 +312,11 @@ private:
   // q_fair of the current mesh.
   double fairness_value()
   {
+    if (options_.fairness_energy == Fairness_energy::CURVATURE_VARIATION) {
+      std::vector<Vec3> normals;
+      const Frozen_curvature_variation frozen = freeze_variation(normals);
+      return curvature_variation_value(frozen, local_points(), normals);
+    }
     return add_fairness_quadratic(
         movable_normals(), [](int, int, double) {}, [](int, double) {});
   }
@@ -329,31 +334,40 @@ private:
         [&](int a, double value) { solver_.set_q(std::size_t(a), w * value); });
   }
 
+  // The curvature variation's weights frozen at the current mesh; the unit normals of its rows
+  // in `normals`.
+  Frozen_curvature_variation freeze_variation(std::vector<Vec3>& normals) const
+  {
+    Frozen_curvature_variation frozen = freeze_curvature_variation(
+        local_points(), sweeper_.local_mesh().face_vertices, region_.energy_vertices,
+        [this](int v, std::vector<int>& out) {
+          for (int i = region_.vertex_neighbor_begin[std::size_t(v)];
+               i < region_.vertex_neighbor_begin[std::size_t(v) + 1]; ++i)
+            out.push_back(region_.vertex_neighbors[std::size_t(i)]);
+        },
+        length_scale_);
+    normals.clear();
+    for (int v : frozen.weights.energy_vertices)
+      normals.push_back(sweeper_.vertex_normals().unit_normal(v));
+    return frozen;
+  }
+
   // q_fair of the chosen energy as a quadratic in the displacements along `directions`, with
   // the weights frozen at the current mesh, to the sinks; returns its value at x = 0.
   template <typename AddP, typename AddQ>
   double add_fairness_quadratic(const std::vector<Vec3>& directions, AddP add_P, AddQ add_q)
   {
     const std::vector<Vec3> points = local_points();
-    const auto& faces = sweeper_.local_mesh().face_vertices;
     if (options_.fairness_energy == Fairness_energy::CURVATURE_VARIATION) {
-      const Frozen_curvature_variation frozen = freeze_curvature_variation(
-          points, faces, region_.energy_vertices,
-          [this](int v, std::vector<int>& out) {
-            for (int i = region_.vertex_neighbor_begin[std::size_t(v)];
-                 i < region_.vertex_neighbor_begin[std::size_t(v) + 1]; ++i)
-              out.push_back(region_.vertex_neighbors[std::size_t(i)]);
-          },
-          length_scale_);
       std::vector<Vec3> normals;
-      for (int v : frozen.weights.energy_vertices)
-        normals.push_back(sweeper_.vertex_normals().unit_normal(v));
+      const Frozen_curvature_variation frozen = freeze_variation(normals);
       return add_curvature_variation_quadratic(frozen, points, normals, region_.variable,
                                                directions, add_P, add_q);
     }
     return add_willmore_quadratic(
-        freeze_willmore_weights(points, faces, region_.energy_vertices), points, region_.variable,
-        directions, add_P, add_q,
+        freeze_willmore_weights(points, sweeper_.local_mesh().face_vertices,
+                                region_.energy_vertices),
+        points, region_.variable, directions, add_P, add_q,
         options_.fairness_energy == Fairness_energy::MEAN_CURVATURE ? &energy_normals() : nullptr);
   }
 
