@@ -157,8 +157,10 @@ with its normal, and every highlight node outside the region. Each iteration min
 `F = ω1 q_fair + ω2 q_diff` (eq. 15) under bounds `|x_i| <= r_i` with a bound-constrained QP
 solver, moves the vertices without flipping a face, and recomputes the highlight lines around
 the region; it stops when the step's `max |x_i| / ē < ε` (eq. 17, `ē` the mean edge length in
-the region), when `F` is stationary (over the last three steps, each below `10 ε ē`, it fell by
-less than `10^-3` of itself per step), or after the iteration bound.
+the region), when the steps shrink so fast that all later ones together would stay below
+`ε ē` (a geometric tail estimated from the last three steps), when `F` is stationary (over the
+last three steps, each below `10 ε ē`, it fell by less than `10^-3` of itself per step), or
+after the iteration bound.
 
 - *Step control*: `r_i = μ b_i`, `b_i` eq. 16's bound (half the shortest edge at `V_i`) and
   `μ` a trust-region factor for the whole region: it starts at 1, doubles (up to 64) when a step

@@ -24,7 +24,8 @@ struct Fairing_report
   /// How the iteration ended.
   enum class Status {
     /// the largest displacement of a step fell below ε times the mean edge length (eq. 17), or
-    /// the target value `F` became stationary under steps below 10 ε times it
+    /// the steps shrank so fast that all later ones together would stay below it, or the
+    /// target value `F` became stationary under steps below 10 ε times it
     CONVERGED,
     /// the iteration bound was reached first; the mesh is the iterate of lowest `F`
     ITERATION_LIMIT,
