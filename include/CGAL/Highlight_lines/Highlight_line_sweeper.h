@@ -63,7 +63,8 @@ copy of the mesh part the model is computed on, the vertex normals of eq. 3 and 
 checks. `compute()` then only evaluates the highlight distance values, classifies the
 vertices against the levels, places the nodes and connects them. This is what an interactive
 sweep of the light setup over the surface needs (§3: "translating and rotating ... the array
-of linear light sources").
+of linear light sources"); `compute(lights, model)` computes each step into the same model
+object, reusing its memory.
 
 When the mesh moves (e.g. during fairing), call `update_positions()`.
 
@@ -345,22 +346,15 @@ public:
   {
     internal::Level_window window = options;
     internal::Highlight_nodes& nodes = out.nodes;
-    if constexpr (is_parallel) {
-      classify(lights, out, facing_side_only);
-      internal::find_active_faces<ConcurrencyTag>(mesh_, owned_edges_, out.keys, window,
-                                                  nodes.active_faces);
-    } else {
-      // Sequentially, fused passes read what the previous step wrote while it is in the cache.
-      internal::classify_and_find_active_faces(
-          classifier(lights), mesh_, owned_edges_, facing_side_only,
-          out.keep_levels ? &out.levels : nullptr, out.keys, out.distances, out.summary,
-          statistics_, window, nodes.active_faces);
-    }
+    classify(lights, out, facing_side_only);
+    internal::find_active_faces<ConcurrencyTag>(mesh_, owned_edges_, out.keys, window,
+                                                nodes.active_faces);
     // Active faces do not depend on the facing window (see is_active_face()).
     internal::set_facing_window<ConcurrencyTag>(normals_, lights.plane_normal_array(), out.keys,
                                                 window);
     out.window = window;
     const std::vector<int>& on_level = out.summary.on_level;
+    // Sequentially, the nodes are placed and connected in one pass over the active faces.
     if (!is_parallel && !internal::may_exceed_node_ids(
                             window, nodes.active_faces.size(),
                             internal::number_of_vertex_nodes(on_level, out.keys, window))) {

@@ -172,87 +172,6 @@ inline bool edge_meets_window(long long key_a, long long key_b, const Level_wind
   return low <= high && (!(low & 1) || low < high);
 }
 
-// Whether a face whose corners have these keys can carry a node, a segment or a highlight edge
-// of the window. Those that cannot (their three corners strictly inside one level band, or no
-// level of the window between their corners) carry none: a segment inside a face lies at a
-// level m with 2m between the bands of two of its corners, a node on a face edge between those
-// of its ends (and edges trimmed beyond the facing window still have levels of the window
-// strictly inside).
-inline bool is_active_face(const std::array<long long, 3>& corner_keys, const Level_window& window)
-{
-  const long long k0 = corner_keys[0];
-  if (k0 == corner_keys[1] && k0 == corner_keys[2] && (k0 & 1))
-    return false;
-  return edge_meets_window(k0, corner_keys[1], window) ||
-         edge_meets_window(corner_keys[1], corner_keys[2], window) ||
-         edge_meets_window(corner_keys[2], k0, window);
-}
-
-// The faces that can carry a node, a segment or a highlight edge of the window (see
-// is_active_face()), in face order.
-template <typename ConcurrencyTag, typename TriangleMesh>
-void find_active_faces(const Local_mesh<TriangleMesh>& lm,
-                       const std::vector<unsigned char>& owned_edges,
-                       const std::vector<long long>& keys, const Level_window& window,
-                       std::vector<Active_face>& active)
-{
-  const Chunks chunks = chunks_for<ConcurrencyTag>(lm.number_of_model_faces, std::size_t(1) << 15);
-  std::vector<std::vector<Active_face>> parts(chunks.size() > 1 ? chunks.size() : 0);
-  active.clear();
-  for_each_chunk<ConcurrencyTag>(chunks, [&](std::size_t c, std::size_t b, std::size_t e) {
-    std::vector<Active_face>& out = parts.empty() ? active : parts[c];
-    const std::array<int, 3>* fv = lm.face_vertices.data();
-    const long long* k = keys.data();
-    for (std::size_t f = b; f < e; ++f) {
-      const std::array<long long, 3> corner_keys = {k[fv[f][0]], k[fv[f][1]], k[fv[f][2]]};
-      if (is_active_face(corner_keys, window))
-        out.push_back(Active_face{fv[f], lm.face_edges[f], int(f), owned_edges[f], corner_keys});
-    }
-  });
-  concatenate(parts, active);
-}
-
-// classify_vertices() and find_active_faces() in one sequential pass over the faces, with the
-// same results. The vertices are classified in blocks just ahead of the first face that
-// reaches them (vertices are numbered in the order the faces first reach them, see
-// build_local_mesh()), so that the keys a face reads were written moments before and are
-// still in the cache; any numbering gives the same results.
-template <typename TriangleMesh>
-void classify_and_find_active_faces(const Level_classifier<TriangleMesh>& classifier,
-                                    const Local_mesh<TriangleMesh>& lm,
-                                    const std::vector<unsigned char>& owned_edges,
-                                    bool facing_side_only, std::vector<Vertex_level>* levels,
-                                    std::vector<long long>& keys, std::vector<double>& distances,
-                                    Classification_summary& summary,
-                                    Classification_statistics& stats, const Level_window& window,
-                                    std::vector<Active_face>& active)
-{
-  const std::size_t nv = lm.number_of_model_vertices;
-  resize_classification(nv, levels, keys, distances);
-  std::vector<Classification_part> part(1);
-  Vertex_level* const level_out = levels != nullptr ? levels->data() : nullptr;
-  constexpr std::size_t block = 256; // vertices classified at a time: the pairs stay busy
-  std::size_t classified = 0;
-  active.clear();
-  const std::array<int, 3>* fv = lm.face_vertices.data();
-  const long long* k = keys.data();
-  for (std::size_t f = 0; f < lm.number_of_model_faces; ++f) {
-    const std::size_t needed = std::size_t((std::max)({fv[f][0], fv[f][1], fv[f][2]})) + 1;
-    if (needed > classified) {
-      const std::size_t next = (std::min)(nv, (std::max)(needed, classified + block));
-      classify_vertex_range(classifier, classified, next, facing_side_only, level_out, keys.data(),
-                            distances.data(), part[0]);
-      classified = next;
-    }
-    const std::array<long long, 3> corner_keys = {k[fv[f][0]], k[fv[f][1]], k[fv[f][2]]};
-    if (is_active_face(corner_keys, window))
-      active.push_back(Active_face{fv[f], lm.face_edges[f], int(f), owned_edges[f], corner_keys});
-  }
-  classify_vertex_range(classifier, classified, nv, facing_side_only, level_out, keys.data(),
-                        distances.data(), part[0]); // vertices of no model face, if any
-  merge_classification(part, summary, stats);
-}
-
 // Asks for the cache line of `address` ahead of its use (a hint only: no effect on results).
 // Forced inline here and in its callers: GCC finds a function made of prefetches free of side
 // effects and drops the calls to it.
@@ -292,6 +211,46 @@ BOOST_FORCEINLINE void prefetch_edge_first_nodes(const Active_face& face,
 
 // Active faces ahead of the one processed whose reads are prefetched.
 constexpr std::size_t prefetch_distance = 8;
+
+// Whether a face whose corners have these keys can carry a node, a segment or a highlight edge
+// of the window. Those that cannot (their three corners strictly inside one level band, or no
+// level of the window between their corners) carry none: a segment inside a face lies at a
+// level m with 2m between the bands of two of its corners, a node on a face edge between those
+// of its ends (and edges trimmed beyond the facing window still have levels of the window
+// strictly inside).
+inline bool is_active_face(const std::array<long long, 3>& corner_keys, const Level_window& window)
+{
+  const long long k0 = corner_keys[0];
+  if (k0 == corner_keys[1] && k0 == corner_keys[2] && (k0 & 1))
+    return false;
+  return edge_meets_window(k0, corner_keys[1], window) ||
+         edge_meets_window(corner_keys[1], corner_keys[2], window) ||
+         edge_meets_window(corner_keys[2], k0, window);
+}
+
+// The faces that can carry a node, a segment or a highlight edge of the window (see
+// is_active_face()), in face order.
+template <typename ConcurrencyTag, typename TriangleMesh>
+void find_active_faces(const Local_mesh<TriangleMesh>& lm,
+                       const std::vector<unsigned char>& owned_edges,
+                       const std::vector<long long>& keys, const Level_window& window,
+                       std::vector<Active_face>& active)
+{
+  const Chunks chunks = chunks_for<ConcurrencyTag>(lm.number_of_model_faces, std::size_t(1) << 15);
+  std::vector<std::vector<Active_face>> parts(chunks.size() > 1 ? chunks.size() : 0);
+  active.clear();
+  for_each_chunk<ConcurrencyTag>(chunks, [&](std::size_t c, std::size_t b, std::size_t e) {
+    std::vector<Active_face>& out = parts.empty() ? active : parts[c];
+    const std::array<int, 3>* fv = lm.face_vertices.data();
+    const long long* k = keys.data();
+    for (std::size_t f = b; f < e; ++f) {
+      const std::array<long long, 3> corner_keys = {k[fv[f][0]], k[fv[f][1]], k[fv[f][2]]};
+      if (is_active_face(corner_keys, window))
+        out.push_back(Active_face{fv[f], lm.face_edges[f], int(f), owned_edges[f], corner_keys});
+    }
+  });
+  concatenate(parts, active);
+}
 
 // Calls f(face, j, count, first, trimmed) for every edge j owned by the active faces
 // [begin, end) with interior levels, with its interior_levels(); and ahead(face) for the face

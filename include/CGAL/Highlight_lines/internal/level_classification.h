@@ -471,99 +471,6 @@ struct Classification_summary
   std::vector<int> on_level;    // defined vertices with d = k·s exactly, increasing
 };
 
-// What classifying a range of vertices gathers besides the classes.
-struct Classification_part
-{
-  Classification_statistics stats;
-  std::size_t undefined = 0, out_of_range = 0;
-  std::vector<int> on_level; // increasing
-};
-
-// Classifies the vertices [b, e): their keys, d values (the distance of Vertex_level) and, if
-// `level_out` is not null, their classes.
-template <typename TriangleMesh>
-void classify_vertex_range(const Level_classifier<TriangleMesh>& classifier, std::size_t b,
-                           std::size_t e, bool facing_side_only, Vertex_level* const level_out,
-                           long long* const key_out, double* const distance_out,
-                           Classification_part& part)
-{
-  // Copies local to the pass: the stores into keys and distances cannot alias its constants
-  // (the lights, the arrays and the options), which then stay in registers.
-  const Level_classifier<TriangleMesh> local_classifier = classifier;
-  const bool local_facing_side_only = facing_side_only;
-  auto store_common_case = [&](std::size_t v,
-                               const typename Level_classifier<TriangleMesh>::Common_case& c) {
-    // Strictly inside a band, or turned away: no vertex node, defined or not counted.
-    if (level_out != nullptr)
-      level_out[v] = c.level();
-    key_out[v] = c.key();
-    distance_out[v] = c.turned_away ? 0.0 : c.d;
-  };
-  auto classify_in_general = [&](std::size_t v) {
-    const Vertex_level l = classifier.classify(int(v), part.stats, facing_side_only);
-    if (level_out != nullptr)
-      level_out[v] = l;
-    const long long key = level_key(l);
-    key_out[v] = key;
-    distance_out[v] = l.distance;
-    if (!(key & 1))
-      part.on_level.push_back(int(v)); // even keys: defined, on a level
-    part.undefined += l.normal_side == 0;
-    part.out_of_range += l.out_of_range;
-  };
-  std::size_t v = b;
-#ifdef CGAL_HIGHLIGHT_LINES_TWO_LANES
-  for (; v + 1 < e; v += 2) {
-    typename Level_classifier<TriangleMesh>::Common_case common[2];
-    const unsigned found =
-        local_classifier.classify_common_case_pair(v, local_facing_side_only, common);
-    if (found == 3) {
-      store_common_case(v, common[0]);
-      store_common_case(v + 1, common[1]);
-      continue;
-    }
-    for (std::size_t i = 0; i < 2; ++i) {
-      if (found & (1u << i))
-        store_common_case(v + i, common[i]);
-      else
-        classify_in_general(v + i);
-    }
-  }
-#endif
-  for (; v < e; ++v) {
-    typename Level_classifier<TriangleMesh>::Common_case common;
-    if (local_classifier.classify_common_case(int(v), local_facing_side_only, common))
-      store_common_case(v, common);
-    else
-      classify_in_general(v);
-  }
-}
-
-// Sizes the outputs of a classification of nv vertices (the stale content is overwritten).
-inline void resize_classification(std::size_t nv, std::vector<Vertex_level>* levels,
-                                  std::vector<long long>& keys, std::vector<double>& distances)
-{
-  if (levels != nullptr)
-    levels->resize(nv);
-  keys.resize(nv);
-  distances.resize(nv);
-}
-
-// Merges the parts of a classification, in order.
-inline void merge_classification(std::vector<Classification_part>& parts,
-                                 Classification_summary& summary, Classification_statistics& stats)
-{
-  summary.undefined = summary.out_of_range = 0;
-  summary.on_level.clear();
-  for (Classification_part& part : parts) {
-    stats.static_filter_failures += part.stats.static_filter_failures;
-    stats.interval_filter_failures += part.stats.interval_filter_failures;
-    summary.undefined += part.undefined;
-    summary.out_of_range += part.out_of_range;
-    summary.on_level.insert(summary.on_level.end(), part.on_level.begin(), part.on_level.end());
-  }
-}
-
 // Classifies the vertices [0, nv) in one pass: their keys, d values (the distance of
 // Vertex_level) and, if `levels` is not null, their classes; concurrently over blocks of
 // vertices with a parallel tag, with the same result.
@@ -573,15 +480,83 @@ void classify_vertices(const Level_classifier<TriangleMesh>& classifier, std::si
                        std::vector<long long>& keys, std::vector<double>& distances,
                        Classification_summary& summary, Classification_statistics& stats)
 {
-  resize_classification(nv, levels, keys, distances);
+  if (levels != nullptr)
+    levels->resize(nv);
+  keys.resize(nv);
+  distances.resize(nv);
   const Chunks chunks = chunks_for<ConcurrencyTag>(nv, std::size_t(1) << 14);
-  std::vector<Classification_part> parts(chunks.size());
+  struct Part
+  {
+    Classification_statistics stats;
+    std::size_t undefined = 0, out_of_range = 0;
+    std::vector<int> on_level;
+  };
+  std::vector<Part> parts(chunks.size());
   for_each_chunk<ConcurrencyTag>(chunks, [&](std::size_t c, std::size_t b, std::size_t e) {
-    classify_vertex_range(classifier, b, e, facing_side_only,
-                          levels != nullptr ? levels->data() : nullptr, keys.data(),
-                          distances.data(), parts[c]);
+    Part& part = parts[c];
+    // Copies local to the pass: the stores into keys and distances cannot alias its
+    // constants (the lights, the arrays and the options), which then stay in registers.
+    const Level_classifier<TriangleMesh> local_classifier = classifier;
+    const bool local_facing_side_only = facing_side_only;
+    Vertex_level* const level_out = levels != nullptr ? levels->data() : nullptr;
+    long long* const key_out = keys.data();
+    double* const distance_out = distances.data();
+    auto store_common_case = [&](std::size_t v,
+                                 const typename Level_classifier<TriangleMesh>::Common_case& c) {
+      // Strictly inside a band, or turned away: no vertex node, defined or not counted.
+      if (level_out != nullptr)
+        level_out[v] = c.level();
+      key_out[v] = c.key();
+      distance_out[v] = c.turned_away ? 0.0 : c.d;
+    };
+    auto classify_in_general = [&](std::size_t v) {
+      const Vertex_level l = classifier.classify(int(v), part.stats, facing_side_only);
+      if (level_out != nullptr)
+        level_out[v] = l;
+      const long long key = level_key(l);
+      key_out[v] = key;
+      distance_out[v] = l.distance;
+      if (!(key & 1))
+        part.on_level.push_back(int(v)); // even keys: defined, on a level
+      part.undefined += l.normal_side == 0;
+      part.out_of_range += l.out_of_range;
+    };
+    std::size_t v = b;
+#ifdef CGAL_HIGHLIGHT_LINES_TWO_LANES
+    for (; v + 1 < e; v += 2) {
+      typename Level_classifier<TriangleMesh>::Common_case common[2];
+      const unsigned found =
+          local_classifier.classify_common_case_pair(v, local_facing_side_only, common);
+      if (found == 3) {
+        store_common_case(v, common[0]);
+        store_common_case(v + 1, common[1]);
+        continue;
+      }
+      for (std::size_t i = 0; i < 2; ++i) {
+        if (found & (1u << i))
+          store_common_case(v + i, common[i]);
+        else
+          classify_in_general(v + i);
+      }
+    }
+#endif
+    for (; v < e; ++v) {
+      typename Level_classifier<TriangleMesh>::Common_case common;
+      if (local_classifier.classify_common_case(int(v), local_facing_side_only, common))
+        store_common_case(v, common);
+      else
+        classify_in_general(v);
+    }
   });
-  merge_classification(parts, summary, stats);
+  summary.undefined = summary.out_of_range = 0;
+  summary.on_level.clear();
+  for (Part& part : parts) {
+    stats.static_filter_failures += part.stats.static_filter_failures;
+    stats.interval_filter_failures += part.stats.interval_filter_failures;
+    summary.undefined += part.undefined;
+    summary.out_of_range += part.out_of_range;
+    summary.on_level.insert(summary.on_level.end(), part.on_level.begin(), part.on_level.end());
+  }
 }
 
 } // namespace internal
