@@ -123,23 +123,34 @@ void BM_compute_highlight_lines(benchmark::State& state)
   report(state, total / double(state.iterations()));
 }
 
-// A sweep step: lights moved, everything independent of them cached in the sweeper.
-template <typename Tag>
+// A sweep step: lights moved, everything independent of them cached in the sweeper, the model
+// computed into the one of the previous step (Highlight_line_sweeper::compute(lights, model)),
+// as a sweep does; with argument NewModel, into a new model object each time.
+template <typename Tag, bool NewModel = false>
 void BM_sweep_update(benchmark::State& state)
 {
   const Mesh& mesh = big_mesh();
   const auto lights = HL::default_light_setup(mesh);
-  const HL::Highlight_line_sweeper<Mesh, CGAL::Default, CGAL::Default, Tag> sweeper(mesh);
+  typedef HL::Highlight_line_sweeper<Mesh, CGAL::Default, CGAL::Default, Tag> Sweeper;
+  const Sweeper sweeper(mesh);
   const auto np = HL::parameters::combine(HL::parameters::level_range(levels_of(state, lights)),
                                           HL::parameters::facing_side_only(state.range(0) == 0));
   double total = 0;
   int step = 0;
   std::size_t nodes = 0;
+  typename Sweeper::Model model;
   for (auto _ : state) {
     const auto moved =
         lights.translated(lights.index_direction() * (lights.spacing() * 0.1 * (++step % 10)));
     const auto start = std::chrono::steady_clock::now();
-    const auto model = sweeper.compute(moved, np);
+    if constexpr (NewModel) {
+      const auto fresh = sweeper.compute(moved, np);
+      total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      nodes = fresh.nodes().size();
+      benchmark::DoNotOptimize(fresh.nodes().data());
+      continue;
+    }
+    sweeper.compute(moved, model, np);
     total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     nodes = model.nodes().size();
     benchmark::DoNotOptimize(model.nodes().data());
@@ -179,6 +190,10 @@ BENCHMARK_TEMPLATE(BM_compute_highlight_lines, CGAL::Sequential_tag)
 BENCHMARK_TEMPLATE(BM_sweep_update, CGAL::Sequential_tag)
     ->Arg(0)
     ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_TEMPLATE(BM_sweep_update, CGAL::Sequential_tag, true)
+    ->Arg(0)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 #ifdef CGAL_LINKED_WITH_TBB

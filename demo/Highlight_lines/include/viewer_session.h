@@ -664,9 +664,11 @@ private:
     const auto start = std::chrono::steady_clock::now();
     lights_ = controls_.applied_to(*reference_lights_);
     levels_ = visible_levels();
-    const auto model = sweeper_->compute(
-        *lights_, HLP::combine(HLP::level_range(levels_), HLP::facing_side_only(true)));
-    // As model.polylines(), into the polylines of the previous update: their memory is reused.
+    // Into the model of the previous update, and as model.polylines() into its polylines:
+    // their memory is reused.
+    sweeper_->compute(*lights_, model_,
+                      HLP::combine(HLP::level_range(levels_), HLP::facing_side_only(true)));
+    const Sweeper::Model& model = model_;
     const auto& nodes = model.nodes();
     lines_.resize(model.lines().size());
     for (std::size_t i = 0; i < lines_.size(); ++i) {
@@ -757,6 +759,7 @@ private:
   std::size_t revision_ = 0, mesh_generation_ = 0;
   std::unique_ptr<Mesh> mesh_;
   std::unique_ptr<Sweeper> sweeper_;
+  Sweeper::Model model_; // the latest lines' model, overwritten by each update
   std::string path_;
   std::array<double, 3> box_center_{};
   double box_diagonal_ = 1;

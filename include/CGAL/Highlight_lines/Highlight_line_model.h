@@ -84,7 +84,36 @@ public:
     std::vector<std::size_t> nodes;
   };
 
+  /*!
+  An empty model (no node, no line, every count zero), to be filled by
+  `Highlight_line_sweeper::compute(lights, model)`; until then its `lights()` are a placeholder
+  (`A0` the origin, `H` along x, `Z` along z, `s = 1`).
+  */
+  Highlight_line_model()
+      : lights_(Point_3(0, 0, 0), typename GeomTraits::Vector_3(1, 0, 0),
+                typename GeomTraits::Vector_3(0, 0, 1), 1),
+        number_of_segments_(0), skipped_edges_(0), undefined_vertices_(0),
+        out_of_range_vertices_(0), trimmed_nodes_(0)
+  {
+  }
+
   /// \cond SKIP_IN_MANUAL
+  // What Highlight_line_sweeper writes into an existing model, reusing its memory: the nodes
+  // and the lines (their node lists included) are overwritten in place.
+  std::vector<Node>& nodes_to_overwrite() { return nodes_; }
+  std::vector<Line>& lines_to_overwrite() { return lines_; }
+  void set_lights_and_counts(const Light_setup<GeomTraits>& lights, std::size_t number_of_segments,
+                             std::size_t skipped_edges, std::size_t undefined_vertices,
+                             std::size_t out_of_range_vertices, std::size_t trimmed_nodes)
+  {
+    lights_ = lights;
+    number_of_segments_ = number_of_segments;
+    skipped_edges_ = skipped_edges;
+    undefined_vertices_ = undefined_vertices;
+    out_of_range_vertices_ = out_of_range_vertices;
+    trimmed_nodes_ = trimmed_nodes;
+  }
+
   Highlight_line_model(const Light_setup<GeomTraits>& lights, std::vector<Node> nodes,
                        std::vector<Line> lines, std::size_t number_of_segments,
                        std::size_t skipped_edges, std::size_t undefined_vertices,

@@ -23,6 +23,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/boost/graph/properties.h>
 
+#include <algorithm>
 #include <limits>
 #include <string>
 #include <utility>
@@ -62,7 +63,8 @@ copy of the mesh part the model is computed on, the vertex normals of eq. 3 and 
 checks. `compute()` then only evaluates the highlight distance values, classifies the
 vertices against the levels, places the nodes and connects them. This is what an interactive
 sweep of the light setup over the surface needs (§3: "translating and rotating ... the array
-of linear light sources").
+of linear light sources"); `compute(lights, model)` computes each step into the same model
+object, reusing its memory.
 
 When the mesh moves (e.g. during fairing), call `update_positions()`.
 
@@ -198,6 +200,26 @@ public:
   Model compute(const Lights& lights,
                 const NamedParameters& np = CGAL::parameters::default_values()) const
   {
+    Model model;
+    compute(lights, model, np);
+    return model;
+  }
+
+  /*!
+  Computes the highlight line model for `lights` into `model`, overwriting it and reusing its
+  memory: the model of a previous sweep step, of any mesh and light setup, or a
+  default-constructed one. The result is the one `compute(lights, np)` returns, bit for bit;
+  a sweep that keeps one model object avoids allocating and touching fresh memory for the
+  nodes and lines of every step (what an interactive viewer does on each light change).
+
+  \param lights the light setup.
+  \param model receives the model.
+  \param np an optional sequence of named parameters, as for `compute(lights, np)`.
+  */
+  template <typename NamedParameters = CGAL::parameters::Default_named_parameters>
+  void compute(const Lights& lights, Model& model,
+               const NamedParameters& np = CGAL::parameters::default_values()) const
+  {
     raw_.keep_levels = false; // the model needs only the keys and d values
     compute_raw(lights, level_window(np), facing_side_only(np), raw_);
     const internal::Highlight_nodes& nodes = raw_.nodes;
@@ -209,32 +231,52 @@ public:
     std::size_t kept = traced.new_order.size();
     while (kept > 0 && traced.degree[std::size_t(traced.new_order[kept - 1])] == 0)
       --kept;
-    // Built in place (no value-initialised nodes to overwrite: one write of the memory).
-    std::vector<typename Model::Node> model_nodes;
-    model_nodes.reserve(kept);
+    // The nodes already there are overwritten (every field: nothing of the previous content
+    // remains), the others built in place (no value-initialised nodes written twice).
+    std::vector<typename Model::Node>& model_nodes = model.nodes_to_overwrite();
+    const std::size_t overwritten = (std::min)(model_nodes.size(), kept);
+    model_nodes.resize(overwritten);
+    // A reused model gets some headroom: the next sweep step's few more nodes then move nothing.
+    if (model_nodes.capacity() < kept)
+      model_nodes.reserve(model_nodes.capacity() == 0 ? kept : kept + kept / 8);
+    // Nodes are read in line order, at random: each node and then its edge's halfedge are
+    // prefetched ahead (two steps, the halfedge needs the node's edge).
+    constexpr std::size_t ahead = 2 * internal::prefetch_distance;
     for (std::size_t i = 0; i < kept; ++i) {
+      if (i + ahead < kept) {
+        const std::size_t later = std::size_t(traced.new_order[i + ahead]);
+        internal::prefetch(&nodes.nodes[later]);
+        internal::prefetch(&traced.degree[later]);
+        const int edge = nodes.nodes[std::size_t(traced.new_order[i + ahead / 2])].edge;
+        if (edge >= 0)
+          internal::prefetch(&mesh_.edge_halfedges[std::size_t(edge)]);
+      }
       const int old_id = traced.new_order[i];
       const internal::Raw_node& raw = nodes.nodes[std::size_t(old_id)];
-      typename Model::Node& node = model_nodes.emplace_back();
+      typename Model::Node& node = i < overwritten ? model_nodes[i] : model_nodes.emplace_back();
       node.point = typename Gt::Point_3(raw.point[0], raw.point[1], raw.point[2]);
       node.level = raw.level;
       node.degree = std::size_t(traced.degree[std::size_t(old_id)]);
       if (raw.edge >= 0) {
         node.halfedge = mesh_.edge_halfedges[std::size_t(raw.edge)];
         node.parameter = raw.parameter;
+        node.vertex = boost::graph_traits<TriangleMesh>::null_vertex();
       } else {
+        node.halfedge = boost::graph_traits<TriangleMesh>::null_halfedge();
+        node.parameter = 0;
         node.vertex = mesh_.vertex_handles[std::size_t(raw.vertex)];
       }
     }
-    std::vector<typename Model::Line> model_lines(traced.lines.size());
+    std::vector<typename Model::Line>& model_lines = model.lines_to_overwrite();
+    model_lines.resize(traced.lines.size());
     for (std::size_t i = 0; i < traced.lines.size(); ++i) {
       model_lines[i].level = traced.lines[i].level;
       model_lines[i].is_closed = traced.lines[i].closed;
       model_lines[i].nodes.assign(traced.lines[i].nodes.begin(), traced.lines[i].nodes.end());
     }
-    return Model(lights, std::move(model_nodes), std::move(model_lines),
-                 raw_.segments.segments.size(), nodes.number_of_capped_edges,
-                 raw_.summary.undefined, raw_.summary.out_of_range, nodes.number_of_trimmed_nodes);
+    model.set_lights_and_counts(lights, raw_.segments.segments.size(), nodes.number_of_capped_edges,
+                                raw_.summary.undefined, raw_.summary.out_of_range,
+                                nodes.number_of_trimmed_nodes);
   }
 
   /*!
@@ -302,16 +344,28 @@ public:
   void compute_raw(const Lights& lights, const internal::Level_window& options,
                    bool facing_side_only, Raw_model& out) const
   {
-    classify(lights, out, facing_side_only);
     internal::Level_window window = options;
+    internal::Highlight_nodes& nodes = out.nodes;
+    classify(lights, out, facing_side_only);
+    internal::find_active_faces<ConcurrencyTag>(mesh_, owned_edges_, out.keys, window,
+                                                nodes.active_faces);
+    // Active faces do not depend on the facing window (see is_active_face()).
     internal::set_facing_window<ConcurrencyTag>(normals_, lights.plane_normal_array(), out.keys,
                                                 window);
     out.window = window;
-    internal::compute_highlight_nodes<ConcurrencyTag>(mesh_, owned_edges_, out.keys, out.distances,
-                                                      out.summary.on_level, lights.spacing_value(),
-                                                      window, out.nodes);
-    internal::connect_highlight_nodes<ConcurrencyTag>(mesh_, out.nodes, window, out.segments);
-    internal::trace_lines(out.nodes.nodes, out.segments.segments, out.lines);
+    const std::vector<int>& on_level = out.summary.on_level;
+    // Sequentially, the nodes are placed and connected in one pass over the active faces.
+    if (!is_parallel && !internal::may_exceed_node_ids(
+                            window, nodes.active_faces.size(),
+                            internal::number_of_vertex_nodes(on_level, out.keys, window))) {
+      internal::place_and_connect_nodes(mesh_, out.keys, out.distances, on_level,
+                                        lights.spacing_value(), window, nodes, out.segments);
+    } else {
+      internal::compute_highlight_nodes<ConcurrencyTag>(mesh_, out.keys, out.distances, on_level,
+                                                        lights.spacing_value(), window, nodes);
+      internal::connect_highlight_nodes<ConcurrencyTag>(mesh_, nodes, window, out.segments);
+    }
+    internal::trace_lines(nodes.nodes, out.segments.segments, out.lines);
   }
 
   template <typename NamedParameters>
@@ -352,12 +406,16 @@ public:
 
   void classify(const Lights& lights, Raw_model& out, bool facing_side_only) const
   {
-    const internal::Level_classifier<TriangleMesh> classifier(
+    internal::classify_vertices<ConcurrencyTag>(
+        classifier(lights), mesh_.number_of_model_vertices, facing_side_only,
+        out.keep_levels ? &out.levels : nullptr, out.keys, out.distances, out.summary, statistics_);
+  }
+
+  internal::Level_classifier<TriangleMesh> classifier(const Lights& lights) const
+  {
+    return internal::Level_classifier<TriangleMesh>(
         mesh_, normals_, lights.base_point_array(), lights.light_direction_array(),
         lights.plane_normal_array(), lights.spacing_value());
-    internal::classify_vertices<ConcurrencyTag>(
-        classifier, mesh_.number_of_model_vertices, facing_side_only,
-        out.keep_levels ? &out.levels : nullptr, out.keys, out.distances, out.summary, statistics_);
   }
   /// \endcond
 

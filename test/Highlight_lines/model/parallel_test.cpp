@@ -2,7 +2,9 @@
 // carriers, parameters, degrees), same lines in the same canonical order, same counts; on
 // real meshes of the shared data set, on a refined one (many chunks per pass), with vertices
 // exactly on levels (vertex nodes, highlight edges), capped edges and face ranges, across
-// sweeps of one sweeper, and after update_positions(). Errors name the same element.
+// sweeps of one sweeper, and after update_positions(). Errors name the same element. A model
+// computed into an existing model object (Highlight_line_sweeper::compute(lights, model)) is
+// the fresh one, whatever the object held before.
 // The identity tests need TBB (CGAL_LINKED_WITH_TBB); without it only the fallback of
 // Parallel_if_available_tag is checked.
 #include "test_meshes.h"
@@ -97,6 +99,70 @@ TEST(Parallel, IfAvailableTagAgreesWithSequential)
   const Lights lights = HL::default_light_setup(mesh);
   expect_tag_agrees<CGAL::Parallel_if_available_tag>(mesh, lights,
                                                      CGAL::parameters::default_values(), "spot");
+}
+
+// Highlight_line_sweeper::compute(lights, model) overwrites a model object: whatever it held
+// before (a larger or smaller model, of another mesh, other lights, vertex nodes or none), the
+// result is the fresh compute(lights)'s, bit for bit, lights and counts included.
+template <typename Sweeper, typename NamedParameters>
+void expect_reused_model_is_fresh(const Sweeper& sweeper, const Lights& lights,
+                                  typename Sweeper::Model& reused, const NamedParameters& np,
+                                  const std::string& what)
+{
+  const typename Sweeper::Model fresh = sweeper.compute(lights, np);
+  sweeper.compute(lights, reused, np);
+  expect_identical(fresh, reused, what);
+  EXPECT_EQ(fresh.number_of_trimmed_nodes(), reused.number_of_trimmed_nodes()) << what;
+  EXPECT_TRUE(fresh.lights().base_point_array() == reused.lights().base_point_array() &&
+              fresh.lights().plane_normal_array() == reused.lights().plane_normal_array() &&
+              fresh.lights().light_direction_array() == reused.lights().light_direction_array() &&
+              fresh.lights().spacing_value() == reused.lights().spacing_value())
+      << what;
+}
+
+template <typename Tag>
+void expect_reused_models_are_fresh(const std::string& tag)
+{
+  typedef HL::Highlight_line_sweeper<Surface_mesh, CGAL::Default, CGAL::Default, Tag> Sweeper;
+  const Surface_mesh refined = shared_mesh("beetle.off", 1), small = shared_mesh("bunny.off"),
+                     grid = flat_grid_with_bump();
+  const Sweeper on_refined(refined), on_small(small), on_grid(grid);
+  const Lights refined_lights = HL::default_light_setup(refined),
+               small_lights = HL::default_light_setup(small);
+  typename Sweeper::Model reused; // one object for the whole sequence
+  EXPECT_TRUE(reused.nodes().empty() && reused.lines().empty());
+  EXPECT_EQ(reused.number_of_segments(), 0u);
+  const auto all = CGAL::parameters::default_values();
+  // Large, then a sweep of one mesh, then smaller meshes and fewer lights, then larger again.
+  expect_reused_model_is_fresh(on_refined, refined_lights, reused, all, tag + ": refined beetle");
+  for (int step = 1; step < 4; ++step)
+    expect_reused_model_is_fresh(on_refined,
+                                 refined_lights.translated(refined_lights.index_direction() *
+                                                           (refined_lights.spacing() * 0.3 * step)),
+                                 reused, HL::parameters::facing_side_only(step % 2 == 0),
+                                 tag + ": refined beetle, sweep step " + std::to_string(step));
+  expect_reused_model_is_fresh(on_small, small_lights, reused, all, tag + ": bunny");
+  expect_reused_model_is_fresh(on_small, small_lights, reused,
+                               HL::parameters::level_range(std::make_pair(0, 1)),
+                               tag + ": bunny, two lights");
+  expect_reused_model_is_fresh(on_grid, flat_grid_lights, reused, all,
+                               tag + ": grid, vertex nodes");
+  expect_reused_model_is_fresh(on_small, small_lights, reused,
+                               HL::parameters::level_range(std::make_pair(5, 4)),
+                               tag + ": bunny, no light");
+  EXPECT_TRUE(reused.nodes().empty() && reused.lines().empty());
+  expect_reused_model_is_fresh(on_refined, refined_lights, reused,
+                               HL::parameters::max_levels_per_edge(2),
+                               tag + ": refined beetle, capped edges");
+  expect_reused_model_is_fresh(on_grid, flat_grid_lights, reused,
+                               HL::parameters::level_range(std::make_pair(-20, 40)),
+                               tag + ": grid, level range");
+}
+
+TEST(Sweeper, ModelComputedIntoAnExistingOneEqualsTheFreshOne)
+{
+  expect_reused_models_are_fresh<CGAL::Sequential_tag>("sequential");
+  expect_reused_models_are_fresh<CGAL::Parallel_if_available_tag>("parallel if available");
 }
 
 #ifdef CGAL_LINKED_WITH_TBB

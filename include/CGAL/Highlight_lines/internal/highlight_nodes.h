@@ -9,6 +9,8 @@
 #include <CGAL/Highlight_lines/internal/parallel.h>
 #include <CGAL/Highlight_lines/internal/vertex_normals.h>
 
+#include <boost/config.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cstddef>
@@ -170,11 +172,64 @@ inline bool edge_meets_window(long long key_a, long long key_b, const Level_wind
   return low <= high && (!(low & 1) || low < high);
 }
 
-// The faces that can carry a node, a segment or a highlight edge of the window, in face order.
-// The others (their three corners strictly inside one level band, or no level of the window
-// between their corners) carry none: a segment inside a face lies at a level m with 2m between
-// the bands of two of its corners, a node on a face edge between those of its ends (and edges
-// trimmed beyond the facing window still have levels of the window strictly inside).
+// Asks for the cache line of `address` ahead of its use (a hint only: no effect on results).
+// Forced inline here and in its callers: GCC finds a function made of prefetches free of side
+// effects and drops the calls to it.
+BOOST_FORCEINLINE void prefetch(const void* address)
+{
+#if defined(__GNUC__)
+  __builtin_prefetch(address);
+#else
+  (void)address;
+#endif
+}
+
+// Prefetches what placing the nodes of an active face reads at random: the d values and
+// points of its corners, and the first node ids of its edges. The passes over active faces
+// call it a few faces ahead, so that these reads do not wait for memory one after the other.
+template <typename TriangleMesh>
+BOOST_FORCEINLINE void prefetch_active_face(const Local_mesh<TriangleMesh>& lm,
+                                            const Active_face& face, const double* distances,
+                                            const int* edge_first_node)
+{
+  for (int j = 0; j < 3; ++j) {
+    const std::size_t v = std::size_t(face.vertices[std::size_t(j)]);
+    prefetch(distances + v);
+    prefetch(lm.xyz.data() + 3 * v);
+    prefetch(lm.xyz.data() + 3 * v + 2); // a point may straddle two cache lines
+    prefetch(edge_first_node + face.edges[std::size_t(j)]);
+  }
+}
+
+// Prefetches the first node ids of the edges of an active face (as the connection reads them).
+BOOST_FORCEINLINE void prefetch_edge_first_nodes(const Active_face& face,
+                                                 const int* edge_first_node)
+{
+  for (int j = 0; j < 3; ++j)
+    prefetch(edge_first_node + face.edges[std::size_t(j)]);
+}
+
+// Active faces ahead of the one processed whose reads are prefetched.
+constexpr std::size_t prefetch_distance = 8;
+
+// Whether a face whose corners have these keys can carry a node, a segment or a highlight edge
+// of the window. Those that cannot (their three corners strictly inside one level band, or no
+// level of the window between their corners) carry none: a segment inside a face lies at a
+// level m with 2m between the bands of two of its corners, a node on a face edge between those
+// of its ends (and edges trimmed beyond the facing window still have levels of the window
+// strictly inside).
+inline bool is_active_face(const std::array<long long, 3>& corner_keys, const Level_window& window)
+{
+  const long long k0 = corner_keys[0];
+  if (k0 == corner_keys[1] && k0 == corner_keys[2] && (k0 & 1))
+    return false;
+  return edge_meets_window(k0, corner_keys[1], window) ||
+         edge_meets_window(corner_keys[1], corner_keys[2], window) ||
+         edge_meets_window(corner_keys[2], k0, window);
+}
+
+// The faces that can carry a node, a segment or a highlight edge of the window (see
+// is_active_face()), in face order.
 template <typename ConcurrencyTag, typename TriangleMesh>
 void find_active_faces(const Local_mesh<TriangleMesh>& lm,
                        const std::vector<unsigned char>& owned_edges,
@@ -190,26 +245,23 @@ void find_active_faces(const Local_mesh<TriangleMesh>& lm,
     const long long* k = keys.data();
     for (std::size_t f = b; f < e; ++f) {
       const std::array<long long, 3> corner_keys = {k[fv[f][0]], k[fv[f][1]], k[fv[f][2]]};
-      const long long k0 = corner_keys[0];
-      if (k0 == corner_keys[1] && k0 == corner_keys[2] && (k0 & 1))
-        continue;
-      if (!edge_meets_window(k0, corner_keys[1], window) &&
-          !edge_meets_window(corner_keys[1], corner_keys[2], window) &&
-          !edge_meets_window(corner_keys[2], k0, window))
-        continue;
-      out.push_back(Active_face{fv[f], lm.face_edges[f], int(f), owned_edges[f], corner_keys});
+      if (is_active_face(corner_keys, window))
+        out.push_back(Active_face{fv[f], lm.face_edges[f], int(f), owned_edges[f], corner_keys});
     }
   });
   concatenate(parts, active);
 }
 
 // Calls f(face, j, count, first, trimmed) for every edge j owned by the active faces
-// [begin, end) with interior levels, with its interior_levels().
-template <typename F>
+// [begin, end) with interior levels, with its interior_levels(); and ahead(face) for the face
+// prefetch_distance ahead of the one processed.
+template <typename F, typename Ahead>
 void for_each_owned_edge(const std::vector<Active_face>& active, std::size_t begin, std::size_t end,
-                         const Level_window& window, F&& f)
+                         const Level_window& window, F&& f, Ahead&& ahead)
 {
   for (std::size_t i = begin; i < end; ++i) {
+    if (i + prefetch_distance < end)
+      ahead(active[i + prefetch_distance]);
     const Active_face& face = active[i];
     if ((face.owned & 7u) == 0)
       continue;
@@ -272,50 +324,124 @@ void set_facing_window(const Vertex_normals& vn, const std::array<double, 3>& z,
   }
 }
 
-// The nodes of a sweep: the active faces; the nodes of their owned edges, placed in one pass
-// per chunk of active faces and numbered by edge; then the vertex nodes. Concurrently with a
-// parallel tag (the chunks' nodes are then renumbered and concatenated in chunk order), with
-// the same result.
+// Node ids are ints.
+constexpr std::size_t max_node_ids = std::size_t((std::numeric_limits<int>::max)());
+
+inline void check_number_of_nodes(std::size_t nodes)
+{
+  if (nodes > max_node_ids)
+    throw std::length_error("highlight line model: more than 2^31 nodes; restrict it with "
+                            "the level_range or face_range named parameters, or raise the "
+                            "spacing");
+}
+
+// The number of vertex nodes of a sweep: the vertices exactly on a level of the window.
+inline std::size_t number_of_vertex_nodes(const std::vector<int>& on_level_vertices,
+                                          const std::vector<long long>& keys,
+                                          const Level_window& window)
+{
+  std::size_t vertex_nodes = 0;
+  for (int v : on_level_vertices)
+    vertex_nodes += window.contains(band_level(key_band(keys[std::size_t(v)])));
+  return vertex_nodes;
+}
+
+// Whether the nodes of these active faces could be more than the ids (an edge keeps at most
+// max_levels_per_edge of them): they must then be counted before the memory is taken.
+inline bool may_exceed_node_ids(const Level_window& window, std::size_t active_faces,
+                                std::size_t vertex_nodes)
+{
+  return double(window.max_levels_per_edge) * double(3 * active_faces) + double(vertex_nodes) >
+         double(max_node_ids);
+}
+
+// Appends to `nodes` the `count` nodes of levels first, first + 1, ... of edge j of `face`,
+// in the canonical direction of the edge.
+template <typename TriangleMesh>
+void place_edge_nodes(const Local_mesh<TriangleMesh>& lm, const Active_face& face, int j,
+                      long long count, long long first, const std::vector<double>& distances,
+                      double spacing, std::vector<Raw_node>& nodes)
+{
+  check_number_of_nodes(nodes.size() + std::size_t(count));
+  const int edge = face.edges[std::size_t(j)];
+  // The canonical direction, without reading edge_vertices.
+  const bool reversed = (face.owned & (8u << j)) != 0;
+  const int va = face.vertices[std::size_t(reversed ? (j + 1) % 3 : j)],
+            vb = face.vertices[std::size_t(reversed ? j : (j + 1) % 3)];
+  const double da = distances[std::size_t(va)], db = distances[std::size_t(vb)];
+  const double* pa = lm.point(va);
+  const double* pb = lm.point(vb);
+  for (long long m = first; m < first + count; ++m) {
+    Raw_node node;
+    node.edge = edge;
+    node.vertex = -1;
+    node.level = m;
+    const double t = db != da ? (double(m) * spacing - da) / (db - da) : 0.5;
+    node.parameter = std::min(1.0, std::max(0.0, t)); // rounding must not leave the edge
+    for (int k = 0; k < 3; ++k)
+      node.point[std::size_t(k)] = pa[k] + node.parameter * (pb[k] - pa[k]);
+    nodes.push_back(node);
+  }
+}
+
+// Appends the vertex nodes (vertices whose d value equals m·s exactly, for m in the window)
+// after the out.number_of_edge_nodes edge nodes, and numbers them in out.vertex_node.
+template <typename TriangleMesh>
+void place_vertex_nodes(const Local_mesh<TriangleMesh>& lm, const std::vector<long long>& keys,
+                        const std::vector<int>& on_level_vertices, std::size_t vertex_nodes,
+                        const Level_window& window, Highlight_nodes& out)
+{
+  check_number_of_nodes(out.number_of_edge_nodes + vertex_nodes);
+  out.nodes.resize(out.number_of_edge_nodes + vertex_nodes);
+  std::size_t id = out.number_of_edge_nodes;
+  for (int v : on_level_vertices) {
+    const long long level = band_level(key_band(keys[std::size_t(v)]));
+    if (!window.contains(level))
+      continue;
+    Raw_node& node = out.nodes[id];
+    node.edge = -1;
+    node.vertex = v;
+    node.level = level;
+    node.parameter = 0;
+    const double* p = lm.point(v);
+    node.point = {p[0], p[1], p[2]};
+    out.vertex_node[std::size_t(v)] = int(id++);
+  }
+}
+
+// The nodes of a sweep on the active faces out.active_faces: the nodes of their owned edges,
+// placed in one pass per chunk of active faces and numbered by edge; then the vertex nodes.
+// Concurrently with a parallel tag (the chunks' nodes are then renumbered and concatenated in
+// chunk order), with the same result.
 template <typename ConcurrencyTag, typename TriangleMesh>
-void compute_highlight_nodes(const Local_mesh<TriangleMesh>& lm,
-                             const std::vector<unsigned char>& owned_edges,
-                             const std::vector<long long>& keys,
+void compute_highlight_nodes(const Local_mesh<TriangleMesh>& lm, const std::vector<long long>& keys,
                              const std::vector<double>& distances,
                              const std::vector<int>& on_level_vertices, double spacing,
                              const Level_window& window, Highlight_nodes& out)
 {
-  find_active_faces<ConcurrencyTag>(lm, owned_edges, keys, window, out.active_faces);
   // Stale entries are never read: no per-sweep initialisation.
   out.edge_first_node.resize(lm.edge_vertices.size());
   out.vertex_node.resize(lm.number_of_model_vertices);
 
   const std::vector<Active_face>& active = out.active_faces;
   const Chunks chunks = chunks_for<ConcurrencyTag>(active.size(), std::size_t(1) << 12);
-  std::size_t vertex_nodes = 0;
-  for (int v : on_level_vertices)
-    vertex_nodes += window.contains(band_level(key_band(keys[std::size_t(v)])));
-  constexpr std::size_t max_nodes = std::size_t((std::numeric_limits<int>::max)());
-  auto check_size = [](std::size_t nodes) {
-    if (nodes > max_nodes)
-      throw std::length_error("highlight line model: more than 2^31 nodes; restrict it with "
-                              "the level_range or face_range named parameters, or raise the "
-                              "spacing");
-  };
-  // An edge keeps at most max_levels_per_edge nodes. Where that could add up to more nodes
-  // than ids, they are counted first, so that the error comes before the memory is taken.
-  if (double(window.max_levels_per_edge) * double(3 * active.size()) + double(vertex_nodes) >
-      double(max_nodes)) {
+  const std::size_t vertex_nodes = number_of_vertex_nodes(on_level_vertices, keys, window);
+  // Where the nodes could add up to more than ids, they are counted first, so that the error
+  // comes before the memory is taken.
+  if (may_exceed_node_ids(window, active.size(), vertex_nodes)) {
     std::vector<std::size_t> chunk_nodes(chunks.size(), 0);
     for_each_chunk<ConcurrencyTag>(chunks, [&](std::size_t c, std::size_t b, std::size_t e) {
-      for_each_owned_edge(active, b, e, window,
-                          [&](const Active_face&, int, long long count, long long, long long) {
-                            chunk_nodes[c] += std::size_t(count);
-                          });
+      for_each_owned_edge(
+          active, b, e, window,
+          [&](const Active_face&, int, long long count, long long, long long) {
+            chunk_nodes[c] += std::size_t(count);
+          },
+          [](const Active_face&) {});
     });
     std::size_t total = vertex_nodes;
     for (std::size_t n : chunk_nodes)
       total += n;
-    check_size(total);
+    check_number_of_nodes(total);
   }
 
   // Edge nodes, per chunk; edge_first_node in ids local to the chunk. Sequentially the one
@@ -340,27 +466,11 @@ void compute_highlight_nodes(const Local_mesh<TriangleMesh>& lm,
           part.trimmed += std::size_t(trimmed);
           if (count == 0)
             return;
-          check_size(nodes.size() + std::size_t(count));
-          const int edge = face.edges[std::size_t(j)];
-          out.edge_first_node[std::size_t(edge)] = int(nodes.size());
-          // The canonical direction, without reading edge_vertices.
-          const bool reversed = (face.owned & (8u << j)) != 0;
-          const int va = face.vertices[std::size_t(reversed ? (j + 1) % 3 : j)],
-                    vb = face.vertices[std::size_t(reversed ? j : (j + 1) % 3)];
-          const double da = distances[std::size_t(va)], db = distances[std::size_t(vb)];
-          const double* pa = lm.point(va);
-          const double* pb = lm.point(vb);
-          for (long long m = first; m < first + count; ++m) {
-            Raw_node node;
-            node.edge = edge;
-            node.vertex = -1;
-            node.level = m;
-            const double t = db != da ? (double(m) * spacing - da) / (db - da) : 0.5;
-            node.parameter = std::min(1.0, std::max(0.0, t)); // rounding must not leave the edge
-            for (int k = 0; k < 3; ++k)
-              node.point[std::size_t(k)] = pa[k] + node.parameter * (pb[k] - pa[k]);
-            nodes.push_back(node);
-          }
+          out.edge_first_node[std::size_t(face.edges[std::size_t(j)])] = int(nodes.size());
+          place_edge_nodes(lm, face, j, count, first, distances, spacing, nodes);
+        },
+        [&](const Active_face& face) {
+          prefetch_active_face(lm, face, distances.data(), out.edge_first_node.data());
         });
   });
 
@@ -380,7 +490,7 @@ void compute_highlight_nodes(const Local_mesh<TriangleMesh>& lm,
     std::size_t total = 0;
     for (const Part& part : parts)
       total += part.nodes.size();
-    check_size(total + vertex_nodes);
+    check_number_of_nodes(total + vertex_nodes);
     out.nodes.resize(total);
     std::vector<std::size_t> offsets(parts.size() + 1, 0);
     for (std::size_t c = 0; c < parts.size(); ++c)
@@ -396,24 +506,7 @@ void compute_highlight_nodes(const Local_mesh<TriangleMesh>& lm,
         });
   }
   out.number_of_edge_nodes = out.nodes.size();
-  check_size(out.number_of_edge_nodes + vertex_nodes);
-  out.nodes.resize(out.number_of_edge_nodes + vertex_nodes);
-
-  // Vertex nodes: vertices whose d value equals m·s exactly.
-  std::size_t id = out.number_of_edge_nodes;
-  for (int v : on_level_vertices) {
-    const long long level = band_level(key_band(keys[std::size_t(v)]));
-    if (!window.contains(level))
-      continue;
-    Raw_node& node = out.nodes[id];
-    node.edge = -1;
-    node.vertex = v;
-    node.level = level;
-    node.parameter = 0;
-    const double* p = lm.point(v);
-    node.point = {p[0], p[1], p[2]};
-    out.vertex_node[std::size_t(v)] = int(id++);
-  }
+  place_vertex_nodes(lm, keys, on_level_vertices, vertex_nodes, window, out);
 }
 
 } // namespace internal
