@@ -95,6 +95,10 @@ struct Highlight_line_irregularity
   /// are four standard deviations of the positions of the anomalies along their two main axes
   /// and `w` the detection scale. Regions are reported by decreasing `confidence * score`.
   double confidence = 0;
+  /// The detection scale `w` (in mean edge lengths) of the sweep that found the region: the
+  /// scale `detection_scale`, or with `local_residual` the one of its scales at which the
+  /// region was strongest.
+  double scale = 0;
 };
 
 } // namespace Highlight_lines
