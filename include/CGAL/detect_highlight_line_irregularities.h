@@ -300,14 +300,55 @@ regions are sized to the defect (about `2w + margin` in radius, not thousands of
 a defect next to a feature gets its own region. The `kind` and the `confidence` are those
 above, computed on the cluster (anomalies less than `detection_scale` edges apart, chained)
 of the region's strongest anomaly, with `11w` in place of `6w` (the fit sees a defect from
-`4w` away). Measured with `benchmark_detection --shared --local-residual` (radius 5 ē,
-2 × 4 defects 0.2 ē high per shared mesh), the located recall (the region holding the defect
-lies within 3R of it) is 0.75 on the rocker arm, 0.625 on the beetle, 0.5 on the bunny and the
-camel head, 0.375 on the fandisk and spot, where the bending measure locates none; but the
-undented meshes still yield 4 to 33 regions, some of them design (on the Beetle a round bump on
-its midplane) with full confidence and many ranked above the small defects, and on the bundled
-demo the roof dent is not the first region: this is why it is not the default yet. The
-denser lines make it about twice as slow (5 s on the shared Beetle, 39k faces, 36 setups).
+`4w` away).
+
+<b>Design is symmetric (with `local_residual`).</b> Designed shapes are mostly mirror
+symmetric, and so is their design: a feature has its mirror image, or lies on the plane and is
+its own, however round and isolated it is (the Beetle's bump on its midplane, Spot's eyes); a
+defect breaks the symmetry by its height. The surface is mirror symmetric about one of the three
+planes through the centroid of its vertices normal to their principal axes (a mirror plane is
+one of them) if three quarters of the vertices have their mirror image within `ē/10` of the
+surface; its own asymmetry `a0` is the 99th percentile of those distances, at least `ē/50`.
+A region's asymmetry `a` is the largest distance of the mirror image of one of its vertices to
+the surface, and its confidence is multiplied by `min(1, (a/a0)²)`. And the shape of a
+region that holds anomalies near asymmetric vertices (farther than `a0` from their mirror
+image, or within `detection_scale` rings of one) is that of their cluster alone: the anomalies
+of the symmetric design next to a defect would chain with its own and make it look elongated.
+On a surface without a mirror symmetry nothing changes. A defect centred on the plane (within
+about `ē` for the injected defects of radius `5ē`) is its own mirror image and is taken for
+design.
+
+<b>Several scales (with `local_residual`, `number_of_scales`).</b> The residual at scale `w`
+sees defects of radius up to `3w/2`; wider ones move the lines over the fit's window too and
+are partly absorbed into the prediction. With `number_of_scales(n)`, the sweep is repeated at
+`2w`, ..., `2^(n-1) w` (the lines twice as far apart each time, so each sweep costs about half
+the one before). The regions of all scales are taken strongest first, each one unless it shares
+a face with one taken before; a region of a coarser scale that holds the centre of a region of
+a finer scale takes the faces and the peak of the strongest such (the finer scale places and
+sizes a defect more precisely). `Highlight_line_irregularity::scale` says at which scale a
+region was strongest. The `kind` of a compact region is the side of the quadric fitted to its
+surroundings (over twice its reach) on which its inner vertex farthest from the fit lies.
+
+Measured with `benchmark_detection --shared --seeds 2 --local-residual` (radius 5 ē, 2 × 4
+defects per height per shared mesh), the located recall (the region holding the defect lies
+within 3R of it) at 1 / 0.5 / 0.2 / 0.1 ē is .875/.875/.625/.625 on the beetle, .667/.333/.5/.5
+on the bunny, .375/.375/.5/.5 on the camel head, .75/.625/.375/.25 on the fandisk,
+.5/.625/.75/.75 on the rocker arm and .625/.75/.375/.625 on spot, where the bending measure
+locates 0–0.13. The defects found rank above every region of the undented mesh at 0.2 ē in
+0.75 of the cases on the beetle and 0.5 on spot (before the symmetry rule: 0 on both; the
+misses are defects not found at all, and on the beetle 3 of the 6 found pass the fairing level
+0.5, none before), 0.375 on the fandisk and 0 to 0.17 on the bunny, the camel head and the
+rocker arm, which have no mirror symmetry (the camel head's, a scan, is
+accepted but its own asymmetry, 0.21 ē, is as large as the defects). On the bundled demo
+(`benchmark_detection --demo --local-residual`) the roof dent is the first region, a `DENT`
+of confidence 0.92, and the 33 design regions have confidence 0.0054 at most. Two scales
+(`--scales 2`) locate no more defects there and rank fewer above the undented fandisk (0 at
+0.2 ē instead of 0.375), at 1.6 times the cost: one scale is the default. Its precision at
+0.2 ē is lower than the bending measure's on the four meshes where both find regions (beetle
+0.19, camel head 0.26, fandisk 0.54, rocker arm 0.32, against 0.38, 0.5, 0.8 and 1: the
+undented meshes yield 4 to 33 regions), so the local residual is not the default yet. The
+denser lines make it about three times as slow as the bending measure (5.4 s against 1.8 s on
+the shared Beetle).
 
 A defect is only seen where several lines cross it: the lights' spacing and
 `number_of_offsets` set how small a defect can be found. Design features that are not sharp
@@ -396,6 +437,11 @@ and the lights together, and independent of the mesh's face order.
       \cgalParamDescription{whether the lines are scored by their sideways residual from a local fit and the anomalies grouped around their peaks (see "The local residual" above) rather than by the bending against each line's statistics and grouped into clusters; with it, the spacing of `lights` is only an upper bound (each setup's lights are brought closer until its lines lie at most `w` apart on most of the surface), `minimum_bending` is a sideways offset in mean edge lengths and `Highlight_line_irregularity::max_bending` the largest such offset}
       \cgalParamType{`bool`}
       \cgalParamDefault{`false`}
+    \cgalParamNEnd
+    \cgalParamNBegin{Highlight_lines::parameters::number_of_scales}
+      \cgalParamDescription{with `local_residual`: the number `n` of detection scales, in `[1, 4]`; the sweep is repeated at `w`, `2w`, ..., `2^(n-1) w` (each about half as costly as the one before) and each region keeps its best scale (see "Several scales" above); ignored without `local_residual`}
+      \cgalParamType{`int`}
+      \cgalParamDefault{`1`}
     \cgalParamNEnd
     \cgalParamNBegin{callback}
       \cgalParamDescription{called after each light setup of the sweep with the fraction of the setups done (in `(0, 1]`); if it returns `false`, the detection stops and writes no region}
@@ -977,28 +1023,66 @@ OutputIterator detect_highlight_line_irregularities(
       // (without a margin): a defect's stay on their own, those of a fillet, a panel joint or a
       // soft crease chain along it, those of a change of shape at a larger scale over it.
       const int join_rings = (std::max)(1, int(std::ceil(scale)));
-      const auto clusters = HL::internal::group_anomalies(
-          corners, nv, anomalies, join_rings, 0,
-          std::vector<std::size_t>(static_cast<std::size_t>(nv), std::size_t(1)), sharp);
-      std::vector<std::size_t> cluster_of(anomalies.size(), std::size_t(-1));
-      std::vector<std::array<double, 2>> cluster_shape(clusters.size());
-      for (std::size_t k = 0; k < clusters.size(); ++k) {
-        for (std::size_t i : clusters[k].anomalies)
-          cluster_of[i] = k;
-        std::set<int> cluster_vertices;
-        for (std::size_t i : clusters[k].anomalies)
-          cluster_vertices.insert(anomalies[i].vertex);
-        Vec3 mean{0, 0, 0};
-        for (int v : cluster_vertices)
-          mean = mean + (1.0 / double(cluster_vertices.size())) * points[std::size_t(v)];
-        double c[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-        for (int v : cluster_vertices) {
-          const Vec3 d = points[std::size_t(v)] - mean;
-          for (int r = 0; r < 3; ++r)
-            for (int q = 0; q < 3; ++q)
-              c[r][q] += d[std::size_t(r)] * d[std::size_t(q)] / double(cluster_vertices.size());
+      // The cluster of each anomaly of `members` (indices into `anomalies`) among them, and the
+      // shape of each cluster.
+      auto cluster = [&](const std::vector<std::size_t>& members,
+                         std::vector<std::size_t>& cluster_of,
+                         std::vector<std::array<double, 2>>& cluster_shape) {
+        std::vector<HL::internal::Anomaly> subset;
+        for (std::size_t i : members)
+          subset.push_back(anomalies[i]);
+        const auto clusters = HL::internal::group_anomalies(
+            corners, nv, subset, join_rings, 0,
+            std::vector<std::size_t>(static_cast<std::size_t>(nv), std::size_t(1)), sharp);
+        cluster_of.assign(anomalies.size(), std::size_t(-1));
+        cluster_shape.assign(clusters.size(), {0, 0});
+        for (std::size_t k = 0; k < clusters.size(); ++k) {
+          std::set<int> cluster_vertices;
+          for (std::size_t j : clusters[k].anomalies) {
+            cluster_of[members[j]] = k;
+            cluster_vertices.insert(subset[j].vertex);
+          }
+          Vec3 mean{0, 0, 0};
+          for (int v : cluster_vertices)
+            mean = mean + (1.0 / double(cluster_vertices.size())) * points[std::size_t(v)];
+          double c[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+          for (int v : cluster_vertices) {
+            const Vec3 d = points[std::size_t(v)] - mean;
+            for (int r = 0; r < 3; ++r)
+              for (int q = 0; q < 3; ++q)
+                c[r][q] += d[std::size_t(r)] * d[std::size_t(q)] / double(cluster_vertices.size());
+          }
+          cluster_shape[k] = HL::internal::largest_spreads(c);
         }
-        cluster_shape[k] = HL::internal::largest_spreads(c);
+      };
+      std::vector<std::size_t> all_anomalies(anomalies.size());
+      for (std::size_t i = 0; i < anomalies.size(); ++i)
+        all_anomalies[i] = i;
+      std::vector<std::size_t> cluster_of;
+      std::vector<std::array<double, 2>> cluster_shape;
+      cluster(all_anomalies, cluster_of, cluster_shape);
+      // On a mirror symmetric surface, the anomalies of the design are explained by the
+      // symmetry; a defect next to a feature would chain with the feature's anomalies and look
+      // elongated. So the shape of a region that holds anomalies near asymmetric vertices (those
+      // farther from their mirror image than the surface's own asymmetry, and the vertices
+      // within `detection_scale` rings of them) is that of their cluster without the others.
+      std::vector<char> asymmetric;
+      std::vector<std::size_t> asymmetric_cluster_of;
+      std::vector<std::array<double, 2>> asymmetric_shape;
+      if (mirror && mirror->is_symmetric()) {
+        asymmetric.assign(static_cast<std::size_t>(nv), 0);
+        for (int v = 0; v < nv; ++v) {
+          double& a = mirror_distance[std::size_t(v)];
+          if (!(a >= 0))
+            a = mirror->asymmetry(v);
+          asymmetric[std::size_t(v)] = a > mirror->tolerance();
+        }
+        HL::internal::grow_by_rings(adjacency, join_rings, asymmetric, sharp);
+        std::vector<std::size_t> members;
+        for (std::size_t i = 0; i < anomalies.size(); ++i)
+          if (asymmetric[std::size_t(anomalies[i].vertex)])
+            members.push_back(i);
+        cluster(members, asymmetric_cluster_of, asymmetric_shape);
       }
       for (const auto& region : regions) {
         if (region.anomalies.empty() || region.faces.empty())
@@ -1032,7 +1116,17 @@ OutputIterator detect_highlight_line_irregularities(
         for (std::size_t i : region.anomalies)
           if (anomalies[i].score > anomalies[strongest].score)
             strongest = i;
-        const auto& axes = cluster_shape[cluster_of[strongest]];
+        std::array<double, 2> axes = cluster_shape[cluster_of[strongest]];
+        if (!asymmetric.empty()) {
+          std::size_t strongest_asymmetric = std::size_t(-1);
+          for (std::size_t i : region.anomalies)
+            if (asymmetric[std::size_t(anomalies[i].vertex)] &&
+                (strongest_asymmetric == std::size_t(-1) ||
+                 anomalies[i].score > anomalies[strongest_asymmetric].score))
+              strongest_asymmetric = i;
+          if (strongest_asymmetric != std::size_t(-1))
+            axes = asymmetric_shape[asymmetric_cluster_of[strongest_asymmetric]];
+        }
         const double length = 4 * axes[0], width = (std::max)(4 * axes[1], w);
         const double slenderness =
             (std::min)(1.0, std::pow(2 * width / (std::max)(length, 1e-300), 2));

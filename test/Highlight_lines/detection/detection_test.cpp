@@ -630,7 +630,10 @@ TEST(LocalResidual, TheDemoRoofDentComesFirstAndTheDesignIsLeftAlone)
 
 // On the shared Beetle, dents and bumps 0.2 ē high (seeds 1-2, 2 x 4): each one found ranks
 // above every region of the undented Beetle (measured: 6 of 8, the two others are not found;
-// 0 of 8 before the symmetry rule, when a round design bump on the midplane had confidence 1).
+// 0 of 8 before the symmetry rule, when a round design bump on the midplane had confidence 1),
+// and half of them pass the level at which the automatic mode fairs (measured: 3 of 6, with
+// confidence 0.67 to 1; none when the shape of a defect's anomalies was measured with those of
+// the symmetric design next to it, which made them look elongated).
 TEST(LocalResidual, RanksDefectsAboveTheDesignOfASymmetricShape)
 {
   HB::Mesh original;
@@ -638,7 +641,7 @@ TEST(LocalResidual, RanksDefectsAboveTheDesignOfASymmetricShape)
   if (!in || !CGAL::IO::read_OFF(in, original))
     GTEST_SKIP() << "shared mesh beetle.off not found";
   const auto own = detect_local_residual(original, true);
-  std::size_t above = 0, defects = 0;
+  std::size_t above = 0, defects = 0, confident = 0;
   for (unsigned seed = 1; seed <= 2; ++seed) {
     HB::Mesh mesh = original;
     const auto injected = HB::inject_defects(mesh, 4, 5.0, 0.2, seed, [](auto) { return true; });
@@ -652,10 +655,12 @@ TEST(LocalResidual, RanksDefectsAboveTheDesignOfASymmetricShape)
       for (const auto& o : own)
         first = first && HB::stronger(found[r], o);
       above += first;
+      confident += found[r].confidence >= 0.5;
     }
   }
   EXPECT_EQ(defects, 8u);
   EXPECT_GE(above, 6u);
+  EXPECT_GE(confident, 3u);
 }
 
 // Line density from the mesh: with lights 6 times too far apart for the defects (5 lines over
