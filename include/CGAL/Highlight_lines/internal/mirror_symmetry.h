@@ -113,9 +113,16 @@ public:
     double best = 0.1 * mean_edge;
     for (const Vec3& axis : eigenvectors(m)) {
       normal_ = (1 / norm(axis)) * axis;
-      for (std::size_t v = 0; v < points.size(); ++v)
+      // The 3n/4-th smallest distance exceeds `best` as soon as more than n - 3n/4 - 1 do: stop
+      // there (the far mirror images of a plane that is no symmetry are the slow queries).
+      const std::size_t q75 = (3 * d.size()) / 4, allowed = d.size() - q75 - 1;
+      std::size_t beyond = 0;
+      for (std::size_t v = 0; v < points.size() && beyond <= allowed; ++v) {
         d[v] = asymmetry(int(v));
-      const std::size_t q75 = (3 * d.size()) / 4;
+        beyond += !(d[v] <= best);
+      }
+      if (beyond > allowed)
+        continue;
       std::nth_element(d.begin(), d.begin() + std::ptrdiff_t(q75), d.end());
       if (!(d[q75] <= best))
         continue;
