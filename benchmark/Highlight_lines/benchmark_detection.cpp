@@ -16,6 +16,10 @@
 //   benchmark_detection --local [--mesh NAME]  the detection near each defect only
 //                                              (face_range: the faces within 3R of it)
 //   benchmark_detection ... --local-residual   the same with HLP::local_residual(true)
+//   benchmark_detection ... --scales N         with HLP::number_of_scales(N) (default 1)
+//   benchmark_detection --demo [--local-residual]  the regions of the demo's --detect mode
+//                                              (scripts/demo, part 3: the Beetle with a dent
+//                                              in its roof; 60 lines, 3 x 4 light setups)
 //
 // Speed: the detection (3 x 2 light setups) on the bundled beetle Loop-subdivided twice
 // (618,496 triangles), as a ratio to one compute_highlight_lines() on the same mesh measured
@@ -129,13 +133,15 @@ double hood(double x, double y)
 
 // --local-residual: the detection with HLP::local_residual(true) (issue 16).
 bool local_residual = false;
+// --scales N: the number of detection scales of the local residual (w, 2w, ...).
+int scales = 1;
 
 std::vector<HB::Irregularity> detect(const HB::Mesh& mesh)
 {
   std::vector<HB::Irregularity> found;
   CGAL::detect_highlight_line_irregularities(
       mesh, HL::default_light_setup(mesh, HLP::number_of_lines(30)), std::back_inserter(found),
-      HLP::local_residual(local_residual));
+      HLP::number_of_scales(HLP::local_residual(local_residual), scales));
   return found;
 }
 
@@ -359,6 +365,40 @@ void local_table(const std::string& name, unsigned seeds)
   }
 }
 
+// The demo's --detect mode on the dented Beetle: every region, its rank and whether it holds
+// the roof dent; time against one compute_highlight_lines() with the same lights.
+void demo_table()
+{
+  HB::vertex_descriptor centre;
+  const HB::Mesh mesh = HB::demo_beetle(centre);
+  const auto lights = HL::default_light_setup(mesh, HLP::number_of_lines(60));
+  auto start = std::chrono::steady_clock::now();
+  {
+    auto model = CGAL::compute_highlight_lines(mesh, lights, CGAL::Emptyset_iterator(),
+                                               HLP::facing_side_only(true));
+    benchmark::DoNotOptimize(model.nodes().data());
+  }
+  const double model_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  start = std::chrono::steady_clock::now();
+  std::vector<HB::Irregularity> found;
+  CGAL::detect_highlight_line_irregularities(
+      mesh, lights, std::back_inserter(found),
+      HLP::local_residual(HLP::number_of_scales(HLP::number_of_offsets(4), scales),
+                          local_residual));
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::cout << "demo beetle, roof dent" << (local_residual ? ", local residual" : "") << ": "
+            << found.size() << " regions, " << std::fixed << std::setprecision(2) << seconds
+            << " s = " << std::setprecision(1) << seconds / model_seconds
+            << " x compute_highlight_lines()" << std::defaultfloat << "\n";
+  const auto holds =
+      HB::regions_of_defects(mesh, {HB::Injected_defect{mesh.point(centre), centre, 0, 0}}, found);
+  for (std::size_t i = 0; i < found.size(); ++i)
+    std::cout << "  " << i + 1 << (holds[0] == i ? " ROOF DENT " : " ") << HB::describe(found[i])
+              << ", scale " << found[i].scale << "\n";
+}
+
 void curves(const std::vector<std::string>& meshes, unsigned seeds, bool hood)
 {
   if (hood) {
@@ -419,7 +459,7 @@ BENCHMARK(BM_detect)->Unit(benchmark::kMillisecond)->UseRealTime();
 int main(int argc, char** argv)
 {
   std::vector<char*> args;
-  bool curves_only = false, hood = true, local = false;
+  bool curves_only = false, hood = true, local = false, demo = false;
   unsigned seeds = 2;
   std::vector<std::string> meshes{"beetle.off",  "bunny.off",      "camelhead.off",
                                   "fandisk.off", "rocker-arm.off", "spot.off"};
@@ -432,8 +472,12 @@ int main(int argc, char** argv)
       meshes.assign(1, argv[++i]), curves_only = true, hood = false;
     else if (std::strcmp(argv[i], "--local") == 0) // the detection near each defect only
       local = true, curves_only = true, hood = false;
+    else if (std::strcmp(argv[i], "--demo") == 0)
+      demo = true, curves_only = true;
     else if (std::strcmp(argv[i], "--local-residual") == 0) // HLP::local_residual(true)
       local_residual = true;
+    else if (std::strcmp(argv[i], "--scales") == 0 && i + 1 < argc)
+      scales = std::stoi(argv[++i]);
     else if (std::strcmp(argv[i], "--seeds") == 0 && i + 1 < argc)
       seeds = unsigned(std::stoul(argv[++i]));
     else
@@ -448,7 +492,9 @@ int main(int argc, char** argv)
       benchmark::RunSpecifiedBenchmarks();
       benchmark::Shutdown();
     }
-    if (local)
+    if (demo)
+      demo_table();
+    else if (local)
       for (const auto& name : meshes)
         local_table(name, seeds);
     else

@@ -8,12 +8,15 @@
 #define HIGHLIGHT_LINES_BENCHMARK_DETECTION_EVALUATION_H
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/detect_highlight_line_irregularities.h>
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <stdexcept>
 #include <iomanip>
 #include <sstream>
 #include <string>
@@ -229,6 +232,39 @@ inline std::vector<bool> genuine_regions(const Mesh& mesh,
         if (CGAL::squared_distance(mesh.point(v), d.centre) < d.radius * d.radius)
           genuine[i] = true;
   return genuine;
+}
+
+// The bundled demo (scripts/demo, part 3): the Beetle with the dent fair_with_highlight_lines
+// presses into its roof; `centre` is the dent's centre vertex.
+inline Mesh demo_beetle(vertex_descriptor& centre)
+{
+  Mesh mesh;
+  std::ifstream in(std::string(HIGHLIGHT_LINES_DATA_DIR) + "/beetle.off");
+  if (!in || !CGAL::IO::read_OFF(in, mesh))
+    throw std::runtime_error("cannot read the bundled beetle");
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(mesh);
+  const double diagonal =
+      std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                CGAL::square(box.zmax() - box.zmin()));
+  const Point wanted(0.04, box.ymax(), -0.12);
+  centre = *vertices(mesh).begin();
+  for (auto v : vertices(mesh))
+    if (CGAL::squared_distance(mesh.point(v), wanted) <
+        CGAL::squared_distance(mesh.point(centre), wanted))
+      centre = v;
+  const Point c = mesh.point(centre);
+  const double radius = 0.6 * 0.07 * diagonal, depth = 0.006 * diagonal;
+  std::vector<std::pair<vertex_descriptor, Point>> moved;
+  for (auto v : vertices(mesh)) {
+    const double r2 = CGAL::squared_distance(mesh.point(v), c) / (radius * radius);
+    if (r2 < 1)
+      moved.emplace_back(v, mesh.point(v) -
+                                depth * (1 - r2) * (1 - r2) * (1 - r2) *
+                                    CGAL::Polygon_mesh_processing::compute_vertex_normal(v, mesh));
+  }
+  for (const auto& m : moved)
+    mesh.point(m.first) = m.second;
+  return mesh;
 }
 
 } // namespace Highlight_lines_benchmark

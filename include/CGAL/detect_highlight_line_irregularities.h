@@ -11,12 +11,15 @@
 #include <CGAL/Highlight_lines/parameters.h>
 #include <CGAL/Highlight_lines/internal/anomaly_regions.h>
 #include <CGAL/Highlight_lines/internal/line_bending.h>
+#include <CGAL/Highlight_lines/internal/mirror_symmetry.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <algorithm>
+#include <array>
+#include <memory>
 #include <cmath>
 #include <set>
 #include <string>
@@ -40,6 +43,7 @@ struct Detection_options
   double sharp_edge_angle = 60;        // degrees
   bool all_sides = true;
   bool local_residual = false;
+  int scales = 1; // with local_residual: w, 2w, ...
 
   template <typename NamedParameters>
   explicit Detection_options(const NamedParameters& np)
@@ -62,6 +66,8 @@ struct Detection_options
     all_sides = bool(choose_parameter(get_parameter(np, internal_np::all_sides), all_sides));
     local_residual =
         bool(choose_parameter(get_parameter(np, internal_np::local_residual), local_residual));
+    const double n =
+        double(choose_parameter(get_parameter(np, internal_np::number_of_scales), scales));
     maximum_incidence_angle = double(choose_parameter(
         get_parameter(np, internal_np::maximum_incidence_angle), maximum_incidence_angle));
     auto require = [](bool ok, const char* what) {
@@ -76,23 +82,29 @@ struct Detection_options
             "minimum_bending must be finite and not negative");
     require(minimum_evidence > 0 && minimum_evidence <= 1, "minimum_evidence must be in (0, 1]");
     require(m >= 0 && m <= 1000, "region_margin must be in [0, 1000] rings");
+    require(n >= 1 && n <= 4, "number_of_scales must be in [1, 4]");
     require(maximum_incidence_angle > 0 && maximum_incidence_angle <= 90,
             "maximum_incidence_angle must be in (0, 90] degrees");
     orientations = int(o);
     offsets = int(k);
     margin = int(m);
+    scales = int(n);
   }
 };
 
-// Whether the vertex `peak` lies below (against `normal`) the quadric height field over its
-// tangent plane fitted to the vertices of `region` farther than 60 % of the region's radius
-// from it; the mean of those vertices if the fit is singular.
-template <typename Local_mesh>
-bool peak_lies_below_fit(const Local_mesh& local, int peak, const vector3::Vec3& normal,
-                         const std::set<int>& region)
+// The quadric height field h(x, y) = c0 + c1 x + c2 y + c3 x^2 + c4 xy + c5 y^2 over the tangent
+// plane (normal `normal`) at the vertex `origin`, x and y in units of the region's radius (the
+// largest distance of a vertex of `region` from `origin`), fitted (least squares) to the
+// vertices of `region` farther than 60 % of that radius from `origin`: the smooth surface the
+// surroundings predict. Calls `inner(h - fit)` for each vertex nearer than that; returns the
+// fit at the origin, or the mean height of the outer vertices if the fit is singular (then
+// `inner` is not called), or 0 if there is nothing to fit.
+template <typename Local_mesh, typename Inner>
+double fit_surroundings(const Local_mesh& local, int origin, const vector3::Vec3& normal,
+                        const std::set<int>& region, Inner inner)
 {
   using namespace vector3;
-  const double* pp = local.point(peak);
+  const double* pp = local.point(origin);
   const Vec3 p{pp[0], pp[1], pp[2]};
   Vec3 t = std::abs(normal[0]) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
   t = t - dot(t, normal) * normal;
@@ -104,16 +116,20 @@ bool peak_lies_below_fit(const Local_mesh& local, int peak, const vector3::Vec3&
     radius = (std::max)(radius, norm(Vec3{q[0], q[1], q[2]} - p));
   }
   if (!(radius > 0))
-    return false;
+    return 0;
+  auto coordinates = [&](int v) {
+    const double* q = local.point(v);
+    const Vec3 d = Vec3{q[0], q[1], q[2]} - p;
+    return std::array<double, 4>{dot(d, t) / radius, dot(d, u) / radius, dot(d, normal), norm(d)};
+  };
   double m[6][7] = {};
   double mean = 0;
   std::size_t count = 0;
   for (int v : region) {
-    const double* q = local.point(v);
-    const Vec3 d = Vec3{q[0], q[1], q[2]} - p;
-    if (norm(d) < 0.6 * radius)
+    const auto c = coordinates(v);
+    if (c[3] < 0.6 * radius)
       continue;
-    const double x = dot(d, t) / radius, y = dot(d, u) / radius, h = dot(d, normal);
+    const double x = c[0], y = c[1], h = c[2];
     const double basis[6] = {1, x, y, x * x, x * y, y * y};
     for (int i = 0; i < 6; ++i) {
       for (int j = 0; j < 6; ++j)
@@ -124,15 +140,15 @@ bool peak_lies_below_fit(const Local_mesh& local, int peak, const vector3::Vec3&
     ++count;
   }
   if (count == 0)
-    return false;
-  // Gaussian elimination with partial pivoting; the constant term is the fit at the peak.
+    return 0;
+  // Gauss-Jordan elimination with partial pivoting.
   for (int c = 0; c < 6; ++c) {
     int pivot = c;
     for (int r = c + 1; r < 6; ++r)
       if (std::abs(m[r][c]) > std::abs(m[pivot][c]))
         pivot = r;
     if (!(std::abs(m[pivot][c]) > 1e-12 * double(count)))
-      return mean / double(count) > 0;
+      return mean / double(count);
     for (int k = 0; k < 7; ++k)
       std::swap(m[c][k], m[pivot][k]);
     for (int r = 0; r < 6; ++r)
@@ -142,7 +158,46 @@ bool peak_lies_below_fit(const Local_mesh& local, int peak, const vector3::Vec3&
           m[r][k] -= f * m[c][k];
       }
   }
-  return m[0][6] / m[0][0] > 0;
+  double coefficient[6];
+  for (int i = 0; i < 6; ++i)
+    coefficient[i] = m[i][6] / m[i][i];
+  for (int v : region) {
+    const auto c = coordinates(v);
+    if (c[3] >= 0.6 * radius)
+      continue;
+    const double x = c[0], y = c[1];
+    inner(c[2] - (coefficient[0] + coefficient[1] * x + coefficient[2] * y +
+                  coefficient[3] * x * x + coefficient[4] * x * y + coefficient[5] * y * y));
+  }
+  return coefficient[0];
+}
+
+// Whether the vertex `peak` lies below (against `normal`) the quadric height field over its
+// tangent plane fitted to the vertices of `region` farther than 60 % of the region's radius
+// from it; the mean of those vertices if the fit is singular.
+template <typename Local_mesh>
+bool peak_lies_below_fit(const Local_mesh& local, int peak, const vector3::Vec3& normal,
+                         const std::set<int>& region)
+{
+  return fit_surroundings(local, peak, normal, region, [](double) {}) > 0;
+}
+
+// Whether the inner part of `region` (within 60 % of its radius from `centre`) lies below
+// (against `normal`) the quadric its outer part predicts: the sign of the inner vertex farthest
+// from the fit. A defect's centre moves most, wherever its strongest anomaly lies (for a wide
+// dent often on its flank, where the lines are displaced most, and where the surface can lie
+// on either side of a fit centred on it); a sum over the inner vertices would add up the
+// fit's own error over the whole neighbourhood.
+template <typename Local_mesh>
+bool region_lies_below_fit(const Local_mesh& local, int centre, const vector3::Vec3& normal,
+                           const std::set<int>& region)
+{
+  double farthest = 0;
+  const double at_centre = fit_surroundings(local, centre, normal, region, [&farthest](double h) {
+    if (std::abs(h) > std::abs(farthest))
+      farthest = h;
+  });
+  return farthest != 0 ? farthest < 0 : at_centre > 0;
 }
 
 } // namespace internal
@@ -245,14 +300,55 @@ regions are sized to the defect (about `2w + margin` in radius, not thousands of
 a defect next to a feature gets its own region. The `kind` and the `confidence` are those
 above, computed on the cluster (anomalies less than `detection_scale` edges apart, chained)
 of the region's strongest anomaly, with `11w` in place of `6w` (the fit sees a defect from
-`4w` away). Measured with `benchmark_detection --shared --local-residual` (radius 5 ē,
-2 × 4 defects 0.2 ē high per shared mesh), the located recall (the region holding the defect
-lies within 3R of it) is 0.75 on the rocker arm, 0.625 on the beetle, 0.5 on the bunny and the
-camel head, 0.375 on the fandisk and spot, where the bending measure locates none; but the
-undented meshes still yield 4 to 33 regions, some of them design (on the Beetle a round bump on
-its midplane) with full confidence and many ranked above the small defects, and on the bundled
-demo the roof dent is not the first region: this is why it is not the default yet. The
-denser lines make it about twice as slow (5 s on the shared Beetle, 39k faces, 36 setups).
+`4w` away).
+
+<b>Design is symmetric (with `local_residual`).</b> Designed shapes are mostly mirror
+symmetric, and so is their design: a feature has its mirror image, or lies on the plane and is
+its own, however round and isolated it is (the Beetle's bump on its midplane, Spot's eyes); a
+defect breaks the symmetry by its height. The surface is mirror symmetric about one of the three
+planes through the centroid of its vertices normal to their principal axes (a mirror plane is
+one of them) if three quarters of the vertices have their mirror image within `ē/10` of the
+surface; its own asymmetry `a0` is the 99th percentile of those distances, at least `ē/50`.
+A region's asymmetry `a` is the largest distance of the mirror image of one of its vertices to
+the surface, and its confidence is multiplied by `min(1, (a/a0)²)`. And the shape of a
+region that holds anomalies near asymmetric vertices (farther than `a0` from their mirror
+image, or within `detection_scale` rings of one) is that of their cluster alone: the anomalies
+of the symmetric design next to a defect would chain with its own and make it look elongated.
+On a surface without a mirror symmetry nothing changes. A defect centred on the plane (within
+about `ē` for the injected defects of radius `5ē`) is its own mirror image and is taken for
+design.
+
+<b>Several scales (with `local_residual`, `number_of_scales`).</b> The residual at scale `w`
+sees defects of radius up to `3w/2`; wider ones move the lines over the fit's window too and
+are partly absorbed into the prediction. With `number_of_scales(n)`, the sweep is repeated at
+`2w`, ..., `2^(n-1) w` (the lines twice as far apart each time, so each sweep costs about half
+the one before). The regions of all scales are taken strongest first, each one unless it shares
+a face with one taken before; a region of a coarser scale that holds the centre of a region of
+a finer scale takes the faces and the peak of the strongest such (the finer scale places and
+sizes a defect more precisely). `Highlight_line_irregularity::scale` says at which scale a
+region was strongest. The `kind` of a compact region is the side of the quadric fitted to its
+surroundings (over twice its reach) on which its inner vertex farthest from the fit lies.
+
+Measured with `benchmark_detection --shared --seeds 2 --local-residual` (radius 5 ē, 2 × 4
+defects per height per shared mesh), the located recall (the region holding the defect lies
+within 3R of it) at 1 / 0.5 / 0.2 / 0.1 ē is .875/.875/.625/.625 on the beetle, .667/.333/.5/.5
+on the bunny, .375/.375/.5/.5 on the camel head, .75/.625/.375/.25 on the fandisk,
+.5/.625/.75/.75 on the rocker arm and .625/.75/.375/.625 on spot, where the bending measure
+locates 0–0.13. The defects found rank above every region of the undented mesh at 0.2 ē in
+0.75 of the cases on the beetle and 0.5 on spot (before the symmetry rule: 0 on both; the
+misses are defects not found at all, and on the beetle 3 of the 6 found pass the fairing level
+0.5, none before), 0.375 on the fandisk and 0 to 0.17 on the bunny, the camel head and the
+rocker arm, which have no mirror symmetry (the camel head's, a scan, is
+accepted but its own asymmetry, 0.21 ē, is as large as the defects). On the bundled demo
+(`benchmark_detection --demo --local-residual`) the roof dent is the first region, a `DENT`
+of confidence 0.92, and the 33 design regions have confidence 0.0054 at most. Two scales
+(`--scales 2`) locate no more defects there and rank fewer above the undented fandisk (0 at
+0.2 ē instead of 0.375), at 1.6 times the cost: one scale is the default. Its precision at
+0.2 ē is lower than the bending measure's on the four meshes where both find regions (beetle
+0.19, camel head 0.26, fandisk 0.54, rocker arm 0.32, against 0.38, 0.5, 0.8 and 1: the
+undented meshes yield 4 to 33 regions), so the local residual is not the default yet. The
+denser lines make it two to three times as slow as the bending measure (3–4 s against 1.4 s on
+the shared Beetle, 39k faces, 36 setups; the symmetry test takes 0.3 s of it).
 
 A defect is only seen where several lines cross it: the lights' spacing and
 `number_of_offsets` set how small a defect can be found. Design features that are not sharp
@@ -342,6 +438,11 @@ and the lights together, and independent of the mesh's face order.
       \cgalParamType{`bool`}
       \cgalParamDefault{`false`}
     \cgalParamNEnd
+    \cgalParamNBegin{Highlight_lines::parameters::number_of_scales}
+      \cgalParamDescription{with `local_residual`: the number `n` of detection scales, in `[1, 4]`; the sweep is repeated at `w`, `2w`, ..., `2^(n-1) w` (each about half as costly as the one before) and each region keeps its best scale (see "Several scales" above); ignored without `local_residual`}
+      \cgalParamType{`int`}
+      \cgalParamDefault{`1`}
+    \cgalParamNEnd
     \cgalParamNBegin{callback}
       \cgalParamDescription{called after each light setup of the sweep with the fraction of the setups done (in `(0, 1]`); if it returns `false`, the detection stops and writes no region}
       \cgalParamType{a callable with signature `bool(double)`}
@@ -424,637 +525,816 @@ OutputIterator detect_highlight_line_irregularities(
     return out;
   const double mean_edge = edge_sum / double(edge_count);
 
-  HL::internal::Line_bending_scales scales;
-  scales.step = options.scale * mean_edge / double(scales.fine_samples);
-  // With `local_residual`, the residual's scales (Line_residual_scales): step h = w/4, the
-  // fit from 3w/2 to 4w on either side, the centre's mean over w/2 on either side.
-  HL::internal::Line_residual_scales residual_scales;
-  residual_scales.step = options.scale * mean_edge / 4.0;
-
-  // Only the options that make sense for every setup of the sweep. An edge crossing more than
-  // max_levels_per_edge levels is dropped with its faces, as before the model's facing window:
-  // the scoring below is tuned on it (with the facing window, the recall on the shared fandisk
-  // falls from 5 to 4 of 8 defects in Detection.FindsMostSmallDefectsAnywhereOnSharedCadMeshes).
-  const auto some_model_options = HL::parameters::facing_side_only(
-      HL::parameters::max_levels_per_edge(
-          choose_parameter(get_parameter(np, HL::internal_np::max_levels_per_edge), 256)),
-      choose_parameter(get_parameter(np, HL::internal_np::facing_side_only), true));
-  const CGAL::Named_function_parameters<bool, HL::internal_np::drop_faces_over_cap_t,
-                                        std::decay_t<decltype(some_model_options)>>
-      model_options(true, some_model_options);
-
-  const double pi = 3.14159265358979323846;
-  // Unit vertex normals (eq. 3), for the incidence test of the samples.
-  std::vector<Vec3> normals(static_cast<std::size_t>(nv));
-  for (int v = 0; v < nv; ++v) {
-    const auto n = sweeper.vertex_normals().unit_normal(v);
-    normals[std::size_t(v)] = Vec3{n[0], n[1], n[2]};
+  // With the local residual, the mirror symmetry of the surface, if it has one (design is
+  // symmetric, defects are not), and the asymmetry of each vertex, computed when needed.
+  std::unique_ptr<HL::internal::Mirror_symmetry> mirror;
+  std::vector<double> mirror_distance;
+  if (options.local_residual) {
+    std::vector<Vec3> vertex_points(static_cast<std::size_t>(nv));
+    for (int v = 0; v < nv; ++v) {
+      const double* p = local.point(v);
+      vertex_points[std::size_t(v)] = Vec3{p[0], p[1], p[2]};
+    }
+    mirror = std::make_unique<HL::internal::Mirror_symmetry>(vertex_points, corners, mean_edge);
+    mirror_distance.assign(static_cast<std::size_t>(nv), -1.0);
   }
-  // Sharp edges: the angle between the normals of their two faces exceeds
-  // `sharp_edge_angle` (the criterion of PMP::detect_sharp_edges()). The lines kink there by
-  // design: anomalies within one ring of a sharp edge's vertex are not counted, and no region
-  // grows across one.
-  std::vector<char> sharp(static_cast<std::size_t>(nv), 0);
-  {
-    const double cos_sharp = std::cos(options.sharp_edge_angle * pi / 180);
-    std::vector<std::array<int, 2>> edge_faces(local.edge_vertices.size(), {-1, -1});
-    for (std::size_t f = 0; f < nf; ++f)
-      for (int e : local.face_edges[f]) {
-        auto& ef = edge_faces[std::size_t(e)];
-        (ef[0] < 0 ? ef[0] : ef[1]) = int(f);
+
+  const HL::internal::Vertex_adjacency adjacency(corners, nv);
+
+  // One sweep at the scale `scale` (w, in mean edge lengths), the `pass`-th of `passes`: its
+  // regions are appended to `found` (their compact faces to `found_faces`); false if cancelled.
+  std::vector<HL::Highlight_line_irregularity<TriangleMesh>> found;
+  std::vector<std::vector<int>> found_faces;
+  std::vector<int> found_centre; // with the local residual: the compact centre vertex
+  auto sweep_at_scale = [&](const double scale, const std::size_t pass,
+                            const std::size_t passes) -> bool {
+    HL::internal::Line_bending_scales scales;
+    scales.step = scale * mean_edge / double(scales.fine_samples);
+    // With `local_residual`, the residual's scales (Line_residual_scales): step h = w/4, the
+    // fit from 3w/2 to 4w on either side, the centre's mean over w/2 on either side.
+    HL::internal::Line_residual_scales residual_scales;
+    residual_scales.step = scale * mean_edge / 4.0;
+
+    // Only the options that make sense for every setup of the sweep. An edge crossing more than
+    // max_levels_per_edge levels is dropped with its faces, as before the model's facing window:
+    // the scoring below is tuned on it (with the facing window, the recall on the shared fandisk
+    // falls from 5 to 4 of 8 defects in Detection.FindsMostSmallDefectsAnywhereOnSharedCadMeshes).
+    const auto some_model_options = HL::parameters::facing_side_only(
+        HL::parameters::max_levels_per_edge(
+            choose_parameter(get_parameter(np, HL::internal_np::max_levels_per_edge), 256)),
+        choose_parameter(get_parameter(np, HL::internal_np::facing_side_only), true));
+    const CGAL::Named_function_parameters<bool, HL::internal_np::drop_faces_over_cap_t,
+                                          std::decay_t<decltype(some_model_options)>>
+        model_options(true, some_model_options);
+
+    const double pi = 3.14159265358979323846;
+    // Unit vertex normals (eq. 3), for the incidence test of the samples.
+    std::vector<Vec3> normals(static_cast<std::size_t>(nv));
+    for (int v = 0; v < nv; ++v) {
+      const auto n = sweeper.vertex_normals().unit_normal(v);
+      normals[std::size_t(v)] = Vec3{n[0], n[1], n[2]};
+    }
+    // Sharp edges: the angle between the normals of their two faces exceeds
+    // `sharp_edge_angle` (the criterion of PMP::detect_sharp_edges()). The lines kink there by
+    // design: anomalies within one ring of a sharp edge's vertex are not counted, and no region
+    // grows across one.
+    std::vector<char> sharp(static_cast<std::size_t>(nv), 0);
+    {
+      const double cos_sharp = std::cos(options.sharp_edge_angle * pi / 180);
+      std::vector<std::array<int, 2>> edge_faces(local.edge_vertices.size(), {-1, -1});
+      for (std::size_t f = 0; f < nf; ++f)
+        for (int e : local.face_edges[f]) {
+          auto& ef = edge_faces[std::size_t(e)];
+          (ef[0] < 0 ? ef[0] : ef[1]) = int(f);
+        }
+      auto face_normal = [&](int f) {
+        const auto& c = corners[std::size_t(f)];
+        const double *p = local.point(c[0]), *q = local.point(c[1]), *r = local.point(c[2]);
+        const Vec3 n = cross(Vec3{q[0] - p[0], q[1] - p[1], q[2] - p[2]},
+                             Vec3{r[0] - p[0], r[1] - p[1], r[2] - p[2]});
+        const double length = norm(n);
+        return length > 0 ? (1 / length) * n : n;
+      };
+      for (std::size_t e = 0; e < edge_faces.size(); ++e)
+        if (edge_faces[e][1] >= 0 &&
+            dot(face_normal(edge_faces[e][0]), face_normal(edge_faces[e][1])) < cos_sharp)
+          for (int v : local.edge_vertices[e])
+            if (v < nv)
+              sharp[std::size_t(v)] = 1;
+    }
+    std::vector<char> near_sharp = sharp;
+    HL::internal::grow_by_rings(HL::internal::Vertex_adjacency(corners, nv), 1, near_sharp);
+    const double minimum_facing = std::cos(options.maximum_incidence_angle * pi / 180);
+
+    // Only the peaks of the bending along a line count (one per stencil width w): the stencil
+    // spreads a defect's response over 3w/2 to either side, the peak stays on the defect.
+    const std::ptrdiff_t peak_window =
+        options.local_residual ? std::ptrdiff_t(residual_scales.gap) : scales.fine_samples;
+    auto is_local_maximum = [peak_window](const std::vector<double>& bending, std::size_t i,
+                                          bool closed) {
+      const std::ptrdiff_t n = std::ptrdiff_t(bending.size());
+      for (std::ptrdiff_t d = -peak_window; d <= peak_window; ++d) {
+        std::ptrdiff_t j = std::ptrdiff_t(i) + d;
+        if (closed)
+          j = ((j % n) + n) % n;
+        if (d == 0 || j < 0 || j >= n)
+          continue;
+        // Values equal up to rounding (plateaus are common: the line is piecewise linear) tie,
+        // and ties go to the first sample, so a plateau yields one peak wherever rounding
+        // leaves its maximum.
+        const double other = bending[std::size_t(j)], tolerance = 1e-9 * bending[i];
+        if (other > bending[i] + tolerance || (other >= bending[i] - tolerance && d < 0))
+          return false;
       }
-    auto face_normal = [&](int f) {
-      const auto& c = corners[std::size_t(f)];
-      const double *p = local.point(c[0]), *q = local.point(c[1]), *r = local.point(c[2]);
-      const Vec3 n = cross(Vec3{q[0] - p[0], q[1] - p[1], q[2] - p[2]},
-                           Vec3{r[0] - p[0], r[1] - p[1], r[2] - p[2]});
-      const double length = norm(n);
-      return length > 0 ? (1 / length) * n : n;
+      return true;
     };
-    for (std::size_t e = 0; e < edge_faces.size(); ++e)
-      if (edge_faces[e][1] >= 0 &&
-          dot(face_normal(edge_faces[e][0]), face_normal(edge_faces[e][1])) < cos_sharp)
-        for (int v : local.edge_vertices[e])
-          if (v < nv)
-            sharp[std::size_t(v)] = 1;
-  }
-  std::vector<char> near_sharp = sharp;
-  HL::internal::grow_by_rings(HL::internal::Vertex_adjacency(corners, nv), 1, near_sharp);
-  const double minimum_facing = std::cos(options.maximum_incidence_angle * pi / 180);
 
-  // Only the peaks of the bending along a line count (one per stencil width w): the stencil
-  // spreads a defect's response over 3w/2 to either side, the peak stays on the defect.
-  const std::ptrdiff_t peak_window =
-      options.local_residual ? std::ptrdiff_t(residual_scales.gap) : scales.fine_samples;
-  auto is_local_maximum = [peak_window](const std::vector<double>& bending, std::size_t i,
-                                        bool closed) {
-    const std::ptrdiff_t n = std::ptrdiff_t(bending.size());
-    for (std::ptrdiff_t d = -peak_window; d <= peak_window; ++d) {
-      std::ptrdiff_t j = std::ptrdiff_t(i) + d;
-      if (closed)
-        j = ((j % n) + n) % n;
-      if (d == 0 || j < 0 || j >= n)
-        continue;
-      // Values equal up to rounding (plateaus are common: the line is piecewise linear) tie,
-      // and ties go to the first sample, so a plateau yields one peak wherever rounding
-      // leaves its maximum.
-      const double other = bending[std::size_t(j)], tolerance = 1e-9 * bending[i];
-      if (other > bending[i] + tolerance || (other >= bending[i] - tolerance && d < 0))
-        return false;
+    std::vector<HL::internal::Anomaly> anomalies;
+    std::size_t line_id = 0, setup_id = 0;
+    std::vector<Vec3> polyline;
+    std::vector<std::vector<int>> sample_vertices;
+    std::vector<HL::internal::Line_bending> bendings;
+    std::vector<HL::internal::Line_residual> residuals;
+    std::vector<char> line_breaks;
+    std::vector<double> setup_deviations; // per setup: the noise of its level residuals
+    double line_noise_floor = 0.25;
+    std::vector<std::vector<double>> level_residuals;
+    std::vector<double> distance_value(static_cast<std::size_t>(nv));
+    std::vector<Vec3> distance_gradient(static_cast<std::size_t>(nv));
+    std::vector<double> gradient_weight(static_cast<std::size_t>(nv));
+    // The light planes: `lights`, then (if all sides are looked at) the five other faces of a
+    // cube around the mesh in the lights' frame (Z, H, H x Z), as far from the mesh's centroid as
+    // `lights`: every unit normal lies within 54.7 degrees of one of their normals, so every face
+    // is scored by the setups of at least one plane. All have the spacing of `lights`.
+    const auto z0 = lights.plane_normal_array(), h0 = lights.light_direction_array();
+    const auto x0 = HL::Light_setup<GeomTraits>::cross(h0, z0);
+    Vec3 centre{0, 0, 0};
+    double reach = 0;
+    for (int v = 0; v < nv; ++v) {
+      const double* p = local.point(v);
+      centre = centre + (1.0 / double(nv)) * Vec3{p[0], p[1], p[2]};
+    }
+    for (int v = 0; v < nv; ++v) {
+      const double* p = local.point(v);
+      reach = (std::max)(reach, norm(Vec3{p[0], p[1], p[2]} - centre));
+    }
+    const auto a0 = lights.base_point_array();
+    double distance = dot(Vec3{a0[0] - centre[0], a0[1] - centre[1], a0[2] - centre[2]},
+                          Vec3{z0[0], z0[1], z0[2]});
+    if (!(distance > reach))
+      distance = 2 * reach;
+    std::vector<HL::Light_setup<GeomTraits>> planes(1, lights);
+    if (options.all_sides)
+      for (int axis = 0; axis < 3; ++axis)
+        for (double sign : {1.0, -1.0}) {
+          if (axis == 0 && sign > 0)
+            continue; // `lights` itself
+          const auto& n = axis == 0 ? z0 : axis == 1 ? h0 : x0;
+          const auto& h = axis == 0 ? h0 : z0;
+          typedef typename GeomTraits::Point_3 Point_3;
+          typedef typename GeomTraits::Vector_3 Vector_3;
+          planes.emplace_back(Point_3(centre[0] + distance * sign * n[0],
+                                      centre[1] + distance * sign * n[1],
+                                      centre[2] + distance * sign * n[2]),
+                              Vector_3(h[0], h[1], h[2]),
+                              Vector_3(sign * n[0], sign * n[1], sign * n[2]), lights.spacing());
+        }
+    // How many setups score each vertex: those of the planes it faces within the incidence limit.
+    std::vector<std::size_t> scoring_setups(static_cast<std::size_t>(nv), 0);
+    for (const auto& plane : planes) {
+      const auto z = plane.plane_normal_array();
+      for (int v = 0; v < nv; ++v)
+        if (dot(normals[std::size_t(v)], Vec3{z[0], z[1], z[2]}) >= minimum_facing)
+          scoring_setups[std::size_t(v)] += std::size_t(options.orientations * options.offsets);
+    }
+
+    // Progress and cancellation (the `callback` named parameter).
+    constexpr bool has_callback =
+        !parameters::is_default_parameter<NamedParameters, internal_np::callback_t>::value;
+    const auto callback =
+        choose_parameter(get_parameter(np, internal_np::callback), [](double) { return true; });
+    const std::size_t total_setups =
+        planes.size() * std::size_t(options.orientations * options.offsets);
+    (void)total_setups;
+
+    // The highlight distance d (eq. 4, without the division by the spacing) at each vertex
+    // facing the lights of `setup`, and its gradient over the surface (area-weighted mean of
+    // those of the faces whose corners all face them). The lines are its level sets m·s: they
+    // lie s/|grad d| apart on the surface, and a sideways shift r of a line is a change
+    // r·grad(d)/s of its level. Shifting the lights across changes d by a constant only.
+    auto compute_distance_gradient = [&](const HL::Light_setup<GeomTraits>& setup) {
+      const auto z = setup.plane_normal_array();
+      const auto a = setup.base_point_array(), hd = setup.light_direction_array();
+      for (int v = 0; v < nv; ++v) {
+        const Vec3& n = normals[std::size_t(v)];
+        const double facing = dot(n, Vec3{z[0], z[1], z[2]});
+        const double* p = local.point(v);
+        const Vec3 w{p[0] - a[0], p[1] - a[1], p[2] - a[2]};
+        distance_value[std::size_t(v)] = facing > 0.05
+                                             ? dot(cross(w, Vec3{hd[0], hd[1], hd[2]}), n) / facing
+                                             : std::numeric_limits<double>::quiet_NaN();
+        distance_gradient[std::size_t(v)] = Vec3{0, 0, 0};
+        gradient_weight[std::size_t(v)] = 0;
+      }
+      for (std::size_t f = 0; f < nf; ++f) {
+        const auto& c = corners[f];
+        const double d0 = distance_value[std::size_t(c[0])], d1 = distance_value[std::size_t(c[1])],
+                     d2 = distance_value[std::size_t(c[2])];
+        if (!std::isfinite(d0) || !std::isfinite(d1) || !std::isfinite(d2))
+          continue;
+        const double *p0 = local.point(c[0]), *p1 = local.point(c[1]), *p2 = local.point(c[2]);
+        const Vec3 q0{p0[0], p0[1], p0[2]}, q1{p1[0], p1[1], p1[2]}, q2{p2[0], p2[1], p2[2]};
+        const Vec3 face_normal = cross(q1 - q0, q2 - q0);
+        const double twice_area = norm(face_normal);
+        if (!(twice_area > 0))
+          continue;
+        // grad = sum d_i (n x e_i) / 2A, e_i the edge opposite corner i; times the area A.
+        const Vec3 e = d0 * (q2 - q1) + d1 * (q0 - q2) + d2 * (q1 - q0);
+        const Vec3 weighted = (0.5 / twice_area) * cross(face_normal, e);
+        for (int v : c) {
+          distance_gradient[std::size_t(v)] = distance_gradient[std::size_t(v)] + weighted;
+          gradient_weight[std::size_t(v)] += 0.5 * twice_area;
+        }
+      }
+      for (int v = 0; v < nv; ++v)
+        if (gradient_weight[std::size_t(v)] > 0)
+          distance_gradient[std::size_t(v)] =
+              (1 / gradient_weight[std::size_t(v)]) * distance_gradient[std::size_t(v)];
+    };
+
+    // Line density from the mesh (with `local_residual`): a defect is only seen where several
+    // lines of one setup cross it, so the lights are brought closer (never farther apart) until
+    // the lines lie at most `w` apart (s/|grad d|, from the gradient computed last) on three
+    // quarters of the surface facing them: a defect of the detection's size (R <= 3w/2) is then
+    // crossed by about three lines of every setup. The lines crowd where the surface curves
+    // (|grad d| grows with the curvature times the distance to the plane), so the flatter parts
+    // set the spacing, and the cost stays proportional to the facing area over w.
+    const double line_spacing = scale * mean_edge;
+    auto with_mesh_spacing = [&](const HL::Light_setup<GeomTraits>& setup) {
+      const auto z = setup.plane_normal_array();
+      std::vector<double> rates;
+      for (int v = 0; v < nv; ++v)
+        if (gradient_weight[std::size_t(v)] > 0 &&
+            dot(normals[std::size_t(v)], Vec3{z[0], z[1], z[2]}) >= minimum_facing)
+          rates.push_back(norm(distance_gradient[std::size_t(v)]));
+      if (rates.empty())
+        return setup;
+      const std::size_t q = rates.size() / 4;
+      std::nth_element(rates.begin(), rates.begin() + std::ptrdiff_t(q), rates.end());
+      const double spacing = line_spacing * rates[q];
+      if (!(spacing > 0) || !std::isfinite(spacing) || !(spacing < setup.spacing_value()))
+        return setup;
+      return HL::Light_setup<GeomTraits>(setup.base_point(), setup.light_direction(),
+                                         setup.plane_normal(), spacing);
+    };
+
+    for (const auto& plane : planes)
+      for (int o = 0; o < options.orientations; ++o) {
+        HL::Light_setup<GeomTraits> turned =
+            o == 0 ? plane : plane.rotated(plane.plane_normal(), pi * o / options.orientations);
+        if (options.local_residual) {
+          compute_distance_gradient(turned);
+          turned = with_mesh_spacing(turned);
+        }
+        const auto across = turned.index_direction();
+        for (int k = 0; k < options.offsets; ++k, ++setup_id) {
+          const HL::Light_setup<GeomTraits> shifted =
+              k == 0 ? turned
+                     : turned.translated(across * (turned.spacing() * k / options.offsets));
+          const auto model = sweeper.compute(shifted, model_options);
+          const auto& nodes = model.nodes();
+          const auto& lines = model.lines();
+
+          if (options.local_residual) {
+            const auto z = shifted.plane_normal_array();
+            // The gradient of the levels: that of the distance over the spacing of this setup.
+            const double level_per_distance = 1 / shifted.spacing_value();
+            residuals.resize(lines.size());
+            level_residuals.resize(lines.size());
+            sample_vertices.resize(lines.size());
+            std::vector<double> pooled;
+            for (std::size_t l = 0; l < lines.size(); ++l) {
+              polyline.clear();
+              line_breaks.clear();
+              for (std::size_t n : lines[l].nodes) {
+                const auto& node = nodes[n];
+                const auto& p = node.point;
+                polyline.push_back(
+                    {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
+                // A node on a sharp edge's vertex or on an edge with one: the line kinks there.
+                bool on_feature = false;
+                auto check = [&](vertex_descriptor v) {
+                  const std::size_t index = get(vim, v);
+                  const int compact =
+                      index < compact_of_index.size() ? compact_of_index[index] : -1;
+                  on_feature = on_feature || (compact >= 0 && sharp[std::size_t(compact)]);
+                };
+                if (node.is_on_vertex())
+                  check(node.vertex);
+                else {
+                  check(source(node.halfedge, tm));
+                  check(target(node.halfedge, tm));
+                }
+                line_breaks.push_back(on_feature ? 1 : 0);
+              }
+              HL::internal::compute_line_residual(polyline, lines[l].is_closed, residual_scales,
+                                                  residuals[l], line_breaks);
+              // Each sample's mesh vertex; samples where the surface turns too far away from the
+              // lights are not scored.
+              const auto& residual = residuals[l];
+              std::vector<double>& level = level_residuals[l];
+              level.assign(residual.valid.size(), std::numeric_limits<double>::quiet_NaN());
+              sample_vertices[l].assign(residual.valid.size(), -1);
+              for (std::size_t i = 0; i < residual.valid.size(); ++i) {
+                if (!residual.valid[i])
+                  continue;
+                const auto& node = nodes[lines[l].nodes[residual.nearest_vertex[i]]];
+                vertex_descriptor v = node.vertex;
+                if (!node.is_on_vertex())
+                  v = node.parameter < 0.5 ? source(node.halfedge, tm) : target(node.halfedge, tm);
+                const std::size_t index = get(vim, v);
+                const int compact = index < compact_of_index.size() ? compact_of_index[index] : -1;
+                if (compact < 0 ||
+                    dot(normals[std::size_t(compact)], Vec3{z[0], z[1], z[2]}) < minimum_facing ||
+                    !(gradient_weight[std::size_t(compact)] > 0))
+                  continue;
+                sample_vertices[l][i] = compact;
+                level[i] = level_per_distance *
+                           dot(residual.residual[i], distance_gradient[std::size_t(compact)]);
+                if (std::isfinite(level[i]))
+                  pooled.push_back(level[i]);
+                else
+                  sample_vertices[l][i] = -1;
+              }
+            }
+            // The noise: median and robust deviation of the level residuals of the whole setup.
+            const HL::internal::Robust_statistics stats =
+                HL::internal::robust_statistics_signed(pooled);
+            setup_deviations.push_back(stats.count >= 32 ? stats.deviation : -1.0);
+
+            // The candidates: the peaks of |level residual - median| along each line (one per
+            // `gap` samples to either side), scored below once the noise of every setup is known.
+            std::vector<double> magnitude;
+            for (std::size_t l = 0; l < lines.size(); ++l, ++line_id) {
+              const auto& level = level_residuals[l];
+              magnitude.assign(level.size(), -1.0);
+              for (std::size_t i = 0; i < level.size(); ++i)
+                if (sample_vertices[l][i] >= 0)
+                  magnitude[i] = std::abs(level[i] - stats.median);
+              // The line's own noise, if it has samples enough to tell.
+              std::vector<double> own;
+              for (std::size_t i = 0; i < level.size(); ++i)
+                if (sample_vertices[l][i] >= 0)
+                  own.push_back(level[i]);
+              const HL::internal::Robust_statistics line_stats =
+                  HL::internal::robust_statistics_signed(own);
+              const double line_noise = line_stats.count >= 32 ? line_stats.deviation : -1.0;
+              for (std::size_t i = 0; i < level.size(); ++i) {
+                if (sample_vertices[l][i] < 0 || !(magnitude[i] > 0))
+                  continue;
+                const double shift = norm(residuals[l].residual[i]) / mean_edge;
+                if (!(shift > options.minimum_bending) ||
+                    !is_local_maximum(magnitude, i, lines[l].is_closed))
+                  continue;
+                if (near_sharp[std::size_t(sample_vertices[l][i])])
+                  continue;
+                HL::internal::Anomaly a;
+                a.vertex = sample_vertices[l][i];
+                a.line = line_id;
+                a.setup = setup_id;
+                a.score = magnitude[i];
+                a.noise = line_noise;
+                a.bending = shift;
+                anomalies.push_back(a);
+              }
+            }
+          } else {
+            bendings.resize(lines.size());
+            sample_vertices.resize(lines.size());
+            const auto z = shifted.plane_normal_array();
+            std::vector<double> pooled;
+            for (std::size_t l = 0; l < lines.size(); ++l) {
+              polyline.clear();
+              for (std::size_t n : lines[l].nodes) {
+                const auto& p = nodes[n].point;
+                polyline.push_back(
+                    {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
+              }
+              HL::internal::compute_line_bending(polyline, lines[l].is_closed, scales, bendings[l]);
+              // Each sample's mesh vertex; samples where the surface turns too far away from the
+              // lights are not scored.
+              std::vector<double>& bending = bendings[l].bending;
+              sample_vertices[l].assign(bending.size(), -1);
+              for (std::size_t i = 0; i < bending.size(); ++i) {
+                if (bending[i] < 0)
+                  continue;
+                const auto& node = nodes[lines[l].nodes[bendings[l].nearest_vertex[i]]];
+                vertex_descriptor v = node.vertex;
+                if (!node.is_on_vertex())
+                  v = node.parameter < 0.5 ? source(node.halfedge, tm) : target(node.halfedge, tm);
+                const std::size_t index = get(vim, v);
+                const int compact = index < compact_of_index.size() ? compact_of_index[index] : -1;
+                if (compact < 0 ||
+                    dot(normals[std::size_t(compact)], Vec3{z[0], z[1], z[2]}) < minimum_facing) {
+                  bending[i] = -1;
+                  continue;
+                }
+                sample_vertices[l][i] = compact;
+                pooled.push_back(bending[i]);
+              }
+            }
+            const HL::internal::Robust_statistics setup_stats =
+                HL::internal::robust_statistics(pooled);
+
+            for (std::size_t l = 0; l < lines.size(); ++l, ++line_id) {
+              HL::internal::Robust_statistics stats =
+                  HL::internal::robust_statistics(bendings[l].bending);
+              if (stats.count < 32)
+                stats = setup_stats;
+              const double deviation = (std::max)({stats.deviation, 0.25 * setup_stats.deviation,
+                                                   1e-3 * options.minimum_bending, 1e-300});
+              const auto& bending = bendings[l].bending;
+              for (std::size_t i = 0; i < bending.size(); ++i) {
+                if (bending[i] < 0 || !(bending[i] > options.minimum_bending))
+                  continue;
+                const double score = (bending[i] - stats.median) / deviation;
+                if (!(score > options.threshold) ||
+                    !is_local_maximum(bending, i, lines[l].is_closed))
+                  continue;
+                if (near_sharp[std::size_t(sample_vertices[l][i])])
+                  continue;
+                HL::internal::Anomaly a;
+                a.vertex = sample_vertices[l][i];
+                a.line = line_id;
+                a.setup = setup_id;
+                a.score = score;
+                a.bending = bending[i];
+                anomalies.push_back(a);
+              }
+            }
+          }
+          if constexpr (has_callback)
+            if (!callback((double(pass) + double(setup_id + 1) / double(total_setups)) /
+                          double(passes)))
+              return false; // cancelled: no region
+        }
+      }
+
+    // The peak against the smooth surface its surroundings predict: a quadric height field over
+    // the peak's tangent plane, fitted (least squares) to the region's outer vertices (beyond
+    // 60 % of the region's radius from the peak).
+    auto dent_or_bump = [&](int peak, const std::vector<int>& faces) {
+      std::set<int> region_vertices;
+      for (int f : faces)
+        for (int v : corners[std::size_t(f)])
+          region_vertices.insert(v);
+      return HL::internal::peak_lies_below_fit(local, peak, normals[std::size_t(peak)],
+                                               region_vertices)
+                 ? HL::Irregularity_kind::DENT
+                 : HL::Irregularity_kind::BUMP;
+    };
+    if (options.local_residual) {
+      // The noise of each setup, floored at half the median over the setups (a setup that only
+      // sees planes has next to none, and would make any rounding an anomaly).
+      {
+        std::vector<double> known;
+        for (double d : setup_deviations)
+          if (d > 0)
+            known.push_back(d);
+        double floor = 1e-300;
+        if (!known.empty()) {
+          std::nth_element(known.begin(), known.begin() + std::ptrdiff_t(known.size() / 2),
+                           known.end());
+          floor = (std::max)(floor, 0.5 * known[known.size() / 2]);
+        }
+        std::size_t kept = 0;
+        for (std::size_t i = 0; i < anomalies.size(); ++i) {
+          HL::internal::Anomaly a = anomalies[i];
+          const double setup_noise = (std::max)(setup_deviations[a.setup], floor);
+          a.score /=
+              a.noise >= 0 ? (std::max)(a.noise, line_noise_floor * setup_noise) : setup_noise;
+          if (!(a.score > options.threshold))
+            continue;
+          anomalies[kept++] = a;
+        }
+        anomalies.resize(kept);
+      }
+
+      // A region must show in a share `minimum_evidence` of the setups that can see it.
+      std::vector<std::size_t> minimum_setups(static_cast<std::size_t>(nv));
+      for (int v = 0; v < nv; ++v)
+        minimum_setups[std::size_t(v)] = (std::max)(
+            std::size_t(1),
+            std::size_t(std::ceil(
+                options.minimum_evidence * double(scoring_setups[std::size_t(v)]) - 1e-9)));
+      std::vector<Vec3> points(static_cast<std::size_t>(nv));
+      for (int v = 0; v < nv; ++v) {
+        const double* p = local.point(v);
+        points[std::size_t(v)] = Vec3{p[0], p[1], p[2]};
+      }
+      const double w = scale * mean_edge;
+      // A defect of radius R <= 3w/2 displaces the lines within R of its centre: its anomalies lie
+      // in a disc of radius 2w. What the surroundings show is read up to three times as far.
+      const double disc = 2 * w, surroundings = 3 * disc;
+      const auto regions = HL::internal::group_anomalies_around_peaks(
+          corners, points, anomalies, disc, options.margin * mean_edge, surroundings, 2 * disc,
+          minimum_setups, sharp);
+      // The clusters the anomalies form when those closer than `detection_scale` edges are joined
+      // (without a margin): a defect's stay on their own, those of a fillet, a panel joint or a
+      // soft crease chain along it, those of a change of shape at a larger scale over it.
+      const int join_rings = (std::max)(1, int(std::ceil(scale)));
+      // The cluster of each anomaly of `members` (indices into `anomalies`) among them, and the
+      // shape of each cluster.
+      auto cluster = [&](const std::vector<std::size_t>& members,
+                         std::vector<std::size_t>& cluster_of,
+                         std::vector<std::array<double, 2>>& cluster_shape) {
+        std::vector<HL::internal::Anomaly> subset;
+        for (std::size_t i : members)
+          subset.push_back(anomalies[i]);
+        const auto clusters = HL::internal::group_anomalies(
+            corners, nv, subset, join_rings, 0,
+            std::vector<std::size_t>(static_cast<std::size_t>(nv), std::size_t(1)), sharp);
+        cluster_of.assign(anomalies.size(), std::size_t(-1));
+        cluster_shape.assign(clusters.size(), {0, 0});
+        for (std::size_t k = 0; k < clusters.size(); ++k) {
+          std::set<int> cluster_vertices;
+          for (std::size_t j : clusters[k].anomalies) {
+            cluster_of[members[j]] = k;
+            cluster_vertices.insert(subset[j].vertex);
+          }
+          Vec3 mean{0, 0, 0};
+          for (int v : cluster_vertices)
+            mean = mean + (1.0 / double(cluster_vertices.size())) * points[std::size_t(v)];
+          double c[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+          for (int v : cluster_vertices) {
+            const Vec3 d = points[std::size_t(v)] - mean;
+            for (int r = 0; r < 3; ++r)
+              for (int q = 0; q < 3; ++q)
+                c[r][q] += d[std::size_t(r)] * d[std::size_t(q)] / double(cluster_vertices.size());
+          }
+          cluster_shape[k] = HL::internal::largest_spreads(c);
+        }
+      };
+      std::vector<std::size_t> all_anomalies(anomalies.size());
+      for (std::size_t i = 0; i < anomalies.size(); ++i)
+        all_anomalies[i] = i;
+      std::vector<std::size_t> cluster_of;
+      std::vector<std::array<double, 2>> cluster_shape;
+      cluster(all_anomalies, cluster_of, cluster_shape);
+      // On a mirror symmetric surface, the anomalies of the design are explained by the
+      // symmetry; a defect next to a feature would chain with the feature's anomalies and look
+      // elongated. So the shape of a region that holds anomalies near asymmetric vertices (those
+      // farther from their mirror image than the surface's own asymmetry, and the vertices
+      // within `detection_scale` rings of them) is that of their cluster without the others.
+      std::vector<char> asymmetric;
+      std::vector<std::size_t> asymmetric_cluster_of;
+      std::vector<std::array<double, 2>> asymmetric_shape;
+      if (mirror && mirror->is_symmetric()) {
+        asymmetric.assign(static_cast<std::size_t>(nv), 0);
+        for (int v = 0; v < nv; ++v) {
+          double& a = mirror_distance[std::size_t(v)];
+          if (!(a >= 0))
+            a = mirror->asymmetry(v);
+          asymmetric[std::size_t(v)] = a > mirror->tolerance();
+        }
+        HL::internal::grow_by_rings(adjacency, join_rings, asymmetric, sharp);
+        std::vector<std::size_t> members;
+        for (std::size_t i = 0; i < anomalies.size(); ++i)
+          if (asymmetric[std::size_t(anomalies[i].vertex)])
+            members.push_back(i);
+        cluster(members, asymmetric_cluster_of, asymmetric_shape);
+      }
+      for (const auto& region : regions) {
+        if (region.anomalies.empty() || region.faces.empty())
+          continue;
+        HL::Highlight_line_irregularity<TriangleMesh> irregularity;
+        irregularity.faces.reserve(region.faces.size());
+        for (int f : region.faces)
+          irregularity.faces.push_back(local.face_handles[std::size_t(f)]);
+        std::set<std::size_t> lines_seen;
+        int peak = region.centre;
+        for (std::size_t i : region.anomalies) {
+          const HL::internal::Anomaly& a = anomalies[i];
+          lines_seen.insert(a.line);
+          if (a.score > irregularity.score) {
+            irregularity.score = a.score;
+            peak = a.vertex;
+          }
+          irregularity.max_bending = (std::max)(irregularity.max_bending, a.bending);
+        }
+        irregularity.peak_vertex = local.vertex_handles[std::size_t(peak)];
+        irregularity.number_of_anomalies = region.anomalies.size();
+        irregularity.number_of_lines = lines_seen.size();
+        irregularity.number_of_light_setups = region.setups;
+
+        // Local or not: the shape of the cluster of the region's strongest anomaly (its spread
+        // along its two main axes, four standard deviations). The fit of a sample sees a defect
+        // up to 4w away, so a defect up to the detection's scale (R <= 3w/2) spreads its
+        // anomalies over a length of at most 2R + 8w = 11w; longer clusters are shape at another
+        // scale, and those more than twice as long as wide follow a feature.
+        std::size_t strongest = region.anomalies.front();
+        for (std::size_t i : region.anomalies)
+          if (anomalies[i].score > anomalies[strongest].score)
+            strongest = i;
+        std::array<double, 2> axes = cluster_shape[cluster_of[strongest]];
+        if (!asymmetric.empty()) {
+          std::size_t strongest_asymmetric = std::size_t(-1);
+          for (std::size_t i : region.anomalies)
+            if (asymmetric[std::size_t(anomalies[i].vertex)] &&
+                (strongest_asymmetric == std::size_t(-1) ||
+                 anomalies[i].score > anomalies[strongest_asymmetric].score))
+              strongest_asymmetric = i;
+          if (strongest_asymmetric != std::size_t(-1))
+            axes = asymmetric_shape[asymmetric_cluster_of[strongest_asymmetric]];
+        }
+        const double length = 4 * axes[0], width = (std::max)(4 * axes[1], w);
+        const double slenderness =
+            (std::min)(1.0, std::pow(2 * width / (std::max)(length, 1e-300), 2));
+        const double extent = (std::min)(1.0, std::pow(11 * w / (std::max)(length, 1e-300), 2));
+        const double seeing =
+            double((std::max)(std::size_t(1), scoring_setups[std::size_t(region.centre)]));
+        irregularity.confidence =
+            (std::min)(1.0, double(region.setups) / seeing) * slenderness * extent;
+        // Design is symmetric: on a mirror symmetric surface, a region whose surface has its
+        // mirror image (up to the surface's own asymmetry) is design, however round and
+        // isolated; a defect moves its surface by its height away from its mirror image.
+        if (mirror && mirror->is_symmetric()) {
+          double asymmetry = 0;
+          for (int f : region.faces)
+            for (int v : corners[std::size_t(f)]) {
+              double& a = mirror_distance[std::size_t(v)];
+              if (!(a >= 0))
+                a = mirror->asymmetry(v);
+              asymmetry = (std::max)(asymmetry, a);
+            }
+          irregularity.confidence *= (std::min)(1.0, std::pow(asymmetry / mirror->tolerance(), 2));
+        }
+        if (slenderness < 1) {
+          irregularity.kind = HL::Irregularity_kind::ELONGATED;
+        } else if (extent < 1) {
+          irregularity.kind = HL::Irregularity_kind::EXTENDED;
+        } else {
+          // Over twice the region's reach (vertices reached along edges, not across a sharp
+          // edge): the surroundings the fit reads then lie beyond a defect that fills the
+          // region, which a wide dent often does at the finer scale.
+          const Vec3& at = points[std::size_t(region.centre)];
+          double reach = 0;
+          for (int f : region.faces)
+            for (int v : corners[std::size_t(f)])
+              reach = (std::max)(reach, norm(points[std::size_t(v)] - at));
+          std::set<int> neighbourhood{region.centre};
+          std::vector<int> front{region.centre};
+          while (!front.empty()) {
+            const int v = front.back();
+            front.pop_back();
+            if (sharp[std::size_t(v)] && v != region.centre)
+              continue;
+            adjacency.for_each_neighbour(v, [&](int u) {
+              if (norm(points[std::size_t(u)] - at) <= 2 * reach && neighbourhood.insert(u).second)
+                front.push_back(u);
+            });
+          }
+          irregularity.kind =
+              HL::internal::region_lies_below_fit(
+                  local, region.centre, normals[std::size_t(region.centre)], neighbourhood)
+                  ? HL::Irregularity_kind::DENT
+                  : HL::Irregularity_kind::BUMP;
+        }
+        irregularity.scale = scale;
+        found.push_back(std::move(irregularity));
+        found_faces.push_back(region.faces);
+        found_centre.push_back(region.centre);
+      }
+    } else {
+      const int join_rings = (std::max)(1, int(std::ceil(scale)));
+      // A region must show in a share `minimum_evidence` of the setups that can see it.
+      std::vector<std::size_t> minimum_setups(static_cast<std::size_t>(nv));
+      for (int v = 0; v < nv; ++v)
+        minimum_setups[std::size_t(v)] = (std::max)(
+            std::size_t(1),
+            std::size_t(std::ceil(
+                options.minimum_evidence * double(scoring_setups[std::size_t(v)]) - 1e-9)));
+      const auto regions = HL::internal::group_anomalies(corners, nv, anomalies, join_rings,
+                                                         options.margin, minimum_setups, sharp);
+      for (const auto& region : regions) {
+        if (region.anomalies.empty())
+          continue;
+        HL::Highlight_line_irregularity<TriangleMesh> irregularity;
+        irregularity.faces.reserve(region.faces.size());
+        for (int f : region.faces)
+          irregularity.faces.push_back(local.face_handles[std::size_t(f)]);
+        std::set<std::size_t> lines_seen, setups_seen;
+        for (std::size_t i : region.anomalies) {
+          const HL::internal::Anomaly& a = anomalies[i];
+          lines_seen.insert(a.line);
+          setups_seen.insert(a.setup);
+          if (a.score > irregularity.score) {
+            irregularity.score = a.score;
+            irregularity.peak_vertex = local.vertex_handles[std::size_t(a.vertex)];
+          }
+          irregularity.max_bending = (std::max)(irregularity.max_bending, a.bending);
+        }
+        irregularity.number_of_anomalies = region.anomalies.size();
+        irregularity.number_of_lines = lines_seen.size();
+        irregularity.number_of_light_setups = setups_seen.size();
+
+        // The shape of the anomalies: their spread along the two main axes (standard deviations
+        // of the positions of their vertices, principal axes of the covariance).
+        std::set<int> anomaly_vertices;
+        for (std::size_t i : region.anomalies)
+          anomaly_vertices.insert(anomalies[i].vertex);
+        Vec3 mean{0, 0, 0};
+        for (int v : anomaly_vertices) {
+          const double* p = local.point(v);
+          mean = mean + (1.0 / double(anomaly_vertices.size())) * Vec3{p[0], p[1], p[2]};
+        }
+        double c[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+        for (int v : anomaly_vertices) {
+          const double* p = local.point(v);
+          const Vec3 d{p[0] - mean[0], p[1] - mean[1], p[2] - mean[2]};
+          for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+              c[i][j] += d[std::size_t(i)] * d[std::size_t(j)] / double(anomaly_vertices.size());
+        }
+        const auto axes = HL::internal::largest_spreads(c);
+        const double w = scale * mean_edge;
+        const double length = 4 * axes[0], width = (std::max)(4 * axes[1], w);
+        // A defect is local: the response to one of radius R spreads over R + 3w/2 from its
+        // centre, so a defect up to the detection's scale (R <= 3w/2) spreads its anomalies over
+        // a length of at most 6w. Larger or longer regions are shape at another scale: design.
+        const double slenderness =
+            (std::min)(1.0, std::pow(2 * width / (std::max)(length, 1e-300), 2));
+        const double locality = (std::min)(1.0, std::pow(6 * w / (std::max)(length, 1e-300), 2));
+        std::size_t seeing = 1;
+        for (std::size_t i : region.anomalies)
+          seeing = (std::max)(seeing, scoring_setups[std::size_t(anomalies[i].vertex)]);
+        irregularity.confidence =
+            (std::min)(1.0, double(setups_seen.size()) / double(seeing)) * slenderness * locality;
+        if (slenderness < 1) {
+          irregularity.kind = HL::Irregularity_kind::ELONGATED;
+        } else if (locality < 1) {
+          irregularity.kind = HL::Irregularity_kind::EXTENDED;
+        } else {
+          int peak = 0; // the strongest anomaly's vertex
+          double best = -1;
+          for (std::size_t i : region.anomalies)
+            if (anomalies[i].score > best) {
+              best = anomalies[i].score;
+              peak = anomalies[i].vertex;
+            }
+          irregularity.kind = dent_or_bump(peak, region.faces);
+        }
+        irregularity.scale = scale;
+        found.push_back(std::move(irregularity));
+        found_faces.push_back(region.faces);
+      }
     }
     return true;
   };
 
-  std::vector<HL::internal::Anomaly> anomalies;
-  std::size_t line_id = 0, setup_id = 0;
-  std::vector<Vec3> polyline;
-  std::vector<std::vector<int>> sample_vertices;
-  std::vector<HL::internal::Line_bending> bendings;
-  std::vector<HL::internal::Line_residual> residuals;
-  std::vector<char> line_breaks;
-  std::vector<double> setup_deviations; // per setup: the noise of its level residuals
-  double line_noise_floor = 0.25;
-  std::vector<std::vector<double>> level_residuals;
-  std::vector<double> distance_value(static_cast<std::size_t>(nv));
-  std::vector<Vec3> distance_gradient(static_cast<std::size_t>(nv));
-  std::vector<double> gradient_weight(static_cast<std::size_t>(nv));
-  // The light planes: `lights`, then (if all sides are looked at) the five other faces of a
-  // cube around the mesh in the lights' frame (Z, H, H x Z), as far from the mesh's centroid as
-  // `lights`: every unit normal lies within 54.7 degrees of one of their normals, so every face
-  // is scored by the setups of at least one plane. All have the spacing of `lights`.
-  const auto z0 = lights.plane_normal_array(), h0 = lights.light_direction_array();
-  const auto x0 = HL::Light_setup<GeomTraits>::cross(h0, z0);
-  Vec3 centre{0, 0, 0};
-  double reach = 0;
-  for (int v = 0; v < nv; ++v) {
-    const double* p = local.point(v);
-    centre = centre + (1.0 / double(nv)) * Vec3{p[0], p[1], p[2]};
-  }
-  for (int v = 0; v < nv; ++v) {
-    const double* p = local.point(v);
-    reach = (std::max)(reach, norm(Vec3{p[0], p[1], p[2]} - centre));
-  }
-  const auto a0 = lights.base_point_array();
-  double distance =
-      dot(Vec3{a0[0] - centre[0], a0[1] - centre[1], a0[2] - centre[2]}, Vec3{z0[0], z0[1], z0[2]});
-  if (!(distance > reach))
-    distance = 2 * reach;
-  std::vector<HL::Light_setup<GeomTraits>> planes(1, lights);
-  if (options.all_sides)
-    for (int axis = 0; axis < 3; ++axis)
-      for (double sign : {1.0, -1.0}) {
-        if (axis == 0 && sign > 0)
-          continue; // `lights` itself
-        const auto& n = axis == 0 ? z0 : axis == 1 ? h0 : x0;
-        const auto& h = axis == 0 ? h0 : z0;
-        typedef typename GeomTraits::Point_3 Point_3;
-        typedef typename GeomTraits::Vector_3 Vector_3;
-        planes.emplace_back(Point_3(centre[0] + distance * sign * n[0],
-                                    centre[1] + distance * sign * n[1],
-                                    centre[2] + distance * sign * n[2]),
-                            Vector_3(h[0], h[1], h[2]),
-                            Vector_3(sign * n[0], sign * n[1], sign * n[2]), lights.spacing());
-      }
-  // How many setups score each vertex: those of the planes it faces within the incidence limit.
-  std::vector<std::size_t> scoring_setups(static_cast<std::size_t>(nv), 0);
-  for (const auto& plane : planes) {
-    const auto z = plane.plane_normal_array();
-    for (int v = 0; v < nv; ++v)
-      if (dot(normals[std::size_t(v)], Vec3{z[0], z[1], z[2]}) >= minimum_facing)
-        scoring_setups[std::size_t(v)] += std::size_t(options.orientations * options.offsets);
-  }
-
-  // Progress and cancellation (the `callback` named parameter).
-  constexpr bool has_callback =
-      !parameters::is_default_parameter<NamedParameters, internal_np::callback_t>::value;
-  const auto callback =
-      choose_parameter(get_parameter(np, internal_np::callback), [](double) { return true; });
-  const std::size_t total_setups =
-      planes.size() * std::size_t(options.orientations * options.offsets);
-  (void)total_setups;
-
-  // The highlight distance d (eq. 4, without the division by the spacing) at each vertex
-  // facing the lights of `setup`, and its gradient over the surface (area-weighted mean of
-  // those of the faces whose corners all face them). The lines are its level sets m·s: they
-  // lie s/|grad d| apart on the surface, and a sideways shift r of a line is a change
-  // r·grad(d)/s of its level. Shifting the lights across changes d by a constant only.
-  auto compute_distance_gradient = [&](const HL::Light_setup<GeomTraits>& setup) {
-    const auto z = setup.plane_normal_array();
-    const auto a = setup.base_point_array(), hd = setup.light_direction_array();
-    for (int v = 0; v < nv; ++v) {
-      const Vec3& n = normals[std::size_t(v)];
-      const double facing = dot(n, Vec3{z[0], z[1], z[2]});
-      const double* p = local.point(v);
-      const Vec3 w{p[0] - a[0], p[1] - a[1], p[2] - a[2]};
-      distance_value[std::size_t(v)] = facing > 0.05
-                                           ? dot(cross(w, Vec3{hd[0], hd[1], hd[2]}), n) / facing
-                                           : std::numeric_limits<double>::quiet_NaN();
-      distance_gradient[std::size_t(v)] = Vec3{0, 0, 0};
-      gradient_weight[std::size_t(v)] = 0;
-    }
-    for (std::size_t f = 0; f < nf; ++f) {
-      const auto& c = corners[f];
-      const double d0 = distance_value[std::size_t(c[0])], d1 = distance_value[std::size_t(c[1])],
-                   d2 = distance_value[std::size_t(c[2])];
-      if (!std::isfinite(d0) || !std::isfinite(d1) || !std::isfinite(d2))
-        continue;
-      const double *p0 = local.point(c[0]), *p1 = local.point(c[1]), *p2 = local.point(c[2]);
-      const Vec3 q0{p0[0], p0[1], p0[2]}, q1{p1[0], p1[1], p1[2]}, q2{p2[0], p2[1], p2[2]};
-      const Vec3 face_normal = cross(q1 - q0, q2 - q0);
-      const double twice_area = norm(face_normal);
-      if (!(twice_area > 0))
-        continue;
-      // grad = sum d_i (n x e_i) / 2A, e_i the edge opposite corner i; times the area A.
-      const Vec3 e = d0 * (q2 - q1) + d1 * (q0 - q2) + d2 * (q1 - q0);
-      const Vec3 weighted = (0.5 / twice_area) * cross(face_normal, e);
-      for (int v : c) {
-        distance_gradient[std::size_t(v)] = distance_gradient[std::size_t(v)] + weighted;
-        gradient_weight[std::size_t(v)] += 0.5 * twice_area;
-      }
-    }
-    for (int v = 0; v < nv; ++v)
-      if (gradient_weight[std::size_t(v)] > 0)
-        distance_gradient[std::size_t(v)] =
-            (1 / gradient_weight[std::size_t(v)]) * distance_gradient[std::size_t(v)];
+  auto stronger = [&found](std::size_t a, std::size_t b) {
+    return found[a].confidence * found[a].score > found[b].confidence * found[b].score;
   };
-
-  // Line density from the mesh (with `local_residual`): a defect is only seen where several
-  // lines of one setup cross it, so the lights are brought closer (never farther apart) until
-  // the lines lie at most `w` apart (s/|grad d|, from the gradient computed last) on three
-  // quarters of the surface facing them: a defect of the detection's size (R <= 3w/2) is then
-  // crossed by about three lines of every setup. The lines crowd where the surface curves
-  // (|grad d| grows with the curvature times the distance to the plane), so the flatter parts
-  // set the spacing, and the cost stays proportional to the facing area over w.
-  const double line_spacing = options.scale * mean_edge;
-  auto with_mesh_spacing = [&](const HL::Light_setup<GeomTraits>& setup) {
-    const auto z = setup.plane_normal_array();
-    std::vector<double> rates;
-    for (int v = 0; v < nv; ++v)
-      if (gradient_weight[std::size_t(v)] > 0 &&
-          dot(normals[std::size_t(v)], Vec3{z[0], z[1], z[2]}) >= minimum_facing)
-        rates.push_back(norm(distance_gradient[std::size_t(v)]));
-    if (rates.empty())
-      return setup;
-    const std::size_t q = rates.size() / 4;
-    std::nth_element(rates.begin(), rates.begin() + std::ptrdiff_t(q), rates.end());
-    const double spacing = line_spacing * rates[q];
-    if (!(spacing > 0) || !std::isfinite(spacing) || !(spacing < setup.spacing_value()))
-      return setup;
-    return HL::Light_setup<GeomTraits>(setup.base_point(), setup.light_direction(),
-                                       setup.plane_normal(), spacing);
-  };
-
-  for (const auto& plane : planes)
-    for (int o = 0; o < options.orientations; ++o) {
-      HL::Light_setup<GeomTraits> turned =
-          o == 0 ? plane : plane.rotated(plane.plane_normal(), pi * o / options.orientations);
-      if (options.local_residual) {
-        compute_distance_gradient(turned);
-        turned = with_mesh_spacing(turned);
-      }
-      const auto across = turned.index_direction();
-      for (int k = 0; k < options.offsets; ++k, ++setup_id) {
-        const HL::Light_setup<GeomTraits> shifted =
-            k == 0 ? turned : turned.translated(across * (turned.spacing() * k / options.offsets));
-        const auto model = sweeper.compute(shifted, model_options);
-        const auto& nodes = model.nodes();
-        const auto& lines = model.lines();
-
-        if (options.local_residual) {
-          const auto z = shifted.plane_normal_array();
-          // The gradient of the levels: that of the distance over the spacing of this setup.
-          const double level_per_distance = 1 / shifted.spacing_value();
-          residuals.resize(lines.size());
-          level_residuals.resize(lines.size());
-          sample_vertices.resize(lines.size());
-          std::vector<double> pooled;
-          for (std::size_t l = 0; l < lines.size(); ++l) {
-            polyline.clear();
-            line_breaks.clear();
-            for (std::size_t n : lines[l].nodes) {
-              const auto& node = nodes[n];
-              const auto& p = node.point;
-              polyline.push_back(
-                  {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
-              // A node on a sharp edge's vertex or on an edge with one: the line kinks there.
-              bool on_feature = false;
-              auto check = [&](vertex_descriptor v) {
-                const std::size_t index = get(vim, v);
-                const int compact = index < compact_of_index.size() ? compact_of_index[index] : -1;
-                on_feature = on_feature || (compact >= 0 && sharp[std::size_t(compact)]);
-              };
-              if (node.is_on_vertex())
-                check(node.vertex);
-              else {
-                check(source(node.halfedge, tm));
-                check(target(node.halfedge, tm));
-              }
-              line_breaks.push_back(on_feature ? 1 : 0);
-            }
-            HL::internal::compute_line_residual(polyline, lines[l].is_closed, residual_scales,
-                                                residuals[l], line_breaks);
-            // Each sample's mesh vertex; samples where the surface turns too far away from the
-            // lights are not scored.
-            const auto& residual = residuals[l];
-            std::vector<double>& level = level_residuals[l];
-            level.assign(residual.valid.size(), std::numeric_limits<double>::quiet_NaN());
-            sample_vertices[l].assign(residual.valid.size(), -1);
-            for (std::size_t i = 0; i < residual.valid.size(); ++i) {
-              if (!residual.valid[i])
-                continue;
-              const auto& node = nodes[lines[l].nodes[residual.nearest_vertex[i]]];
-              vertex_descriptor v = node.vertex;
-              if (!node.is_on_vertex())
-                v = node.parameter < 0.5 ? source(node.halfedge, tm) : target(node.halfedge, tm);
-              const std::size_t index = get(vim, v);
-              const int compact = index < compact_of_index.size() ? compact_of_index[index] : -1;
-              if (compact < 0 ||
-                  dot(normals[std::size_t(compact)], Vec3{z[0], z[1], z[2]}) < minimum_facing ||
-                  !(gradient_weight[std::size_t(compact)] > 0))
-                continue;
-              sample_vertices[l][i] = compact;
-              level[i] = level_per_distance *
-                         dot(residual.residual[i], distance_gradient[std::size_t(compact)]);
-              if (std::isfinite(level[i]))
-                pooled.push_back(level[i]);
-              else
-                sample_vertices[l][i] = -1;
-            }
-          }
-          // The noise: median and robust deviation of the level residuals of the whole setup.
-          const HL::internal::Robust_statistics stats =
-              HL::internal::robust_statistics_signed(pooled);
-          setup_deviations.push_back(stats.count >= 32 ? stats.deviation : -1.0);
-
-          // The candidates: the peaks of |level residual - median| along each line (one per
-          // `gap` samples to either side), scored below once the noise of every setup is known.
-          std::vector<double> magnitude;
-          for (std::size_t l = 0; l < lines.size(); ++l, ++line_id) {
-            const auto& level = level_residuals[l];
-            magnitude.assign(level.size(), -1.0);
-            for (std::size_t i = 0; i < level.size(); ++i)
-              if (sample_vertices[l][i] >= 0)
-                magnitude[i] = std::abs(level[i] - stats.median);
-            // The line's own noise, if it has samples enough to tell.
-            std::vector<double> own;
-            for (std::size_t i = 0; i < level.size(); ++i)
-              if (sample_vertices[l][i] >= 0)
-                own.push_back(level[i]);
-            const HL::internal::Robust_statistics line_stats =
-                HL::internal::robust_statistics_signed(own);
-            const double line_noise = line_stats.count >= 32 ? line_stats.deviation : -1.0;
-            for (std::size_t i = 0; i < level.size(); ++i) {
-              if (sample_vertices[l][i] < 0 || !(magnitude[i] > 0))
-                continue;
-              const double shift = norm(residuals[l].residual[i]) / mean_edge;
-              if (!(shift > options.minimum_bending) ||
-                  !is_local_maximum(magnitude, i, lines[l].is_closed))
-                continue;
-              if (near_sharp[std::size_t(sample_vertices[l][i])])
-                continue;
-              HL::internal::Anomaly a;
-              a.vertex = sample_vertices[l][i];
-              a.line = line_id;
-              a.setup = setup_id;
-              a.score = magnitude[i];
-              a.noise = line_noise;
-              a.bending = shift;
-              anomalies.push_back(a);
-            }
-          }
-        } else {
-          bendings.resize(lines.size());
-          sample_vertices.resize(lines.size());
-          const auto z = shifted.plane_normal_array();
-          std::vector<double> pooled;
-          for (std::size_t l = 0; l < lines.size(); ++l) {
-            polyline.clear();
-            for (std::size_t n : lines[l].nodes) {
-              const auto& p = nodes[n].point;
-              polyline.push_back(
-                  {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
-            }
-            HL::internal::compute_line_bending(polyline, lines[l].is_closed, scales, bendings[l]);
-            // Each sample's mesh vertex; samples where the surface turns too far away from the
-            // lights are not scored.
-            std::vector<double>& bending = bendings[l].bending;
-            sample_vertices[l].assign(bending.size(), -1);
-            for (std::size_t i = 0; i < bending.size(); ++i) {
-              if (bending[i] < 0)
-                continue;
-              const auto& node = nodes[lines[l].nodes[bendings[l].nearest_vertex[i]]];
-              vertex_descriptor v = node.vertex;
-              if (!node.is_on_vertex())
-                v = node.parameter < 0.5 ? source(node.halfedge, tm) : target(node.halfedge, tm);
-              const std::size_t index = get(vim, v);
-              const int compact = index < compact_of_index.size() ? compact_of_index[index] : -1;
-              if (compact < 0 ||
-                  dot(normals[std::size_t(compact)], Vec3{z[0], z[1], z[2]}) < minimum_facing) {
-                bending[i] = -1;
-                continue;
-              }
-              sample_vertices[l][i] = compact;
-              pooled.push_back(bending[i]);
-            }
-          }
-          const HL::internal::Robust_statistics setup_stats =
-              HL::internal::robust_statistics(pooled);
-
-          for (std::size_t l = 0; l < lines.size(); ++l, ++line_id) {
-            HL::internal::Robust_statistics stats =
-                HL::internal::robust_statistics(bendings[l].bending);
-            if (stats.count < 32)
-              stats = setup_stats;
-            const double deviation = (std::max)({stats.deviation, 0.25 * setup_stats.deviation,
-                                                 1e-3 * options.minimum_bending, 1e-300});
-            const auto& bending = bendings[l].bending;
-            for (std::size_t i = 0; i < bending.size(); ++i) {
-              if (bending[i] < 0 || !(bending[i] > options.minimum_bending))
-                continue;
-              const double score = (bending[i] - stats.median) / deviation;
-              if (!(score > options.threshold) || !is_local_maximum(bending, i, lines[l].is_closed))
-                continue;
-              if (near_sharp[std::size_t(sample_vertices[l][i])])
-                continue;
-              HL::internal::Anomaly a;
-              a.vertex = sample_vertices[l][i];
-              a.line = line_id;
-              a.setup = setup_id;
-              a.score = score;
-              a.bending = bending[i];
-              anomalies.push_back(a);
-            }
-          }
-        }
-        if constexpr (has_callback)
-          if (!callback(double(setup_id + 1) / double(total_setups)))
-            return out; // cancelled: no region
-      }
-    }
-
-  std::vector<HL::Highlight_line_irregularity<TriangleMesh>> found;
-  // The peak against the smooth surface its surroundings predict: a quadric height field over
-  // the peak's tangent plane, fitted (least squares) to the region's outer vertices (beyond
-  // 60 % of the region's radius from the peak).
-  auto dent_or_bump = [&](int peak, const std::vector<int>& faces) {
-    std::set<int> region_vertices;
-    for (int f : faces)
-      for (int v : corners[std::size_t(f)])
-        region_vertices.insert(v);
-    return HL::internal::peak_lies_below_fit(local, peak, normals[std::size_t(peak)],
-                                             region_vertices)
-               ? HL::Irregularity_kind::DENT
-               : HL::Irregularity_kind::BUMP;
-  };
-  if (options.local_residual) {
-    // The noise of each setup, floored at half the median over the setups (a setup that only
-    // sees planes has next to none, and would make any rounding an anomaly).
-    {
-      std::vector<double> known;
-      for (double d : setup_deviations)
-        if (d > 0)
-          known.push_back(d);
-      double floor = 1e-300;
-      if (!known.empty()) {
-        std::nth_element(known.begin(), known.begin() + std::ptrdiff_t(known.size() / 2),
-                         known.end());
-        floor = (std::max)(floor, 0.5 * known[known.size() / 2]);
-      }
-      std::size_t kept = 0;
-      for (std::size_t i = 0; i < anomalies.size(); ++i) {
-        HL::internal::Anomaly a = anomalies[i];
-        const double setup_noise = (std::max)(setup_deviations[a.setup], floor);
-        a.score /= a.noise >= 0 ? (std::max)(a.noise, line_noise_floor * setup_noise) : setup_noise;
-        if (!(a.score > options.threshold))
-          continue;
-        anomalies[kept++] = a;
-      }
-      anomalies.resize(kept);
-    }
-
-    // A region must show in a share `minimum_evidence` of the setups that can see it.
-    std::vector<std::size_t> minimum_setups(static_cast<std::size_t>(nv));
-    for (int v = 0; v < nv; ++v)
-      minimum_setups[std::size_t(v)] = (std::max)(
-          std::size_t(1),
-          std::size_t(
-              std::ceil(options.minimum_evidence * double(scoring_setups[std::size_t(v)]) - 1e-9)));
-    std::vector<Vec3> points(static_cast<std::size_t>(nv));
-    for (int v = 0; v < nv; ++v) {
-      const double* p = local.point(v);
-      points[std::size_t(v)] = Vec3{p[0], p[1], p[2]};
-    }
-    const double w = options.scale * mean_edge;
-    // A defect of radius R <= 3w/2 displaces the lines within R of its centre: its anomalies lie
-    // in a disc of radius 2w. What the surroundings show is read up to three times as far.
-    const double disc = 2 * w, surroundings = 3 * disc;
-    const auto regions = HL::internal::group_anomalies_around_peaks(
-        corners, points, anomalies, disc, options.margin * mean_edge, surroundings, 2 * disc,
-        minimum_setups, sharp);
-    // The clusters the anomalies form when those closer than `detection_scale` edges are joined
-    // (without a margin): a defect's stay on their own, those of a fillet, a panel joint or a
-    // soft crease chain along it, those of a change of shape at a larger scale over it.
-    const int join_rings = (std::max)(1, int(std::ceil(options.scale)));
-    const auto clusters = HL::internal::group_anomalies(
-        corners, nv, anomalies, join_rings, 0,
-        std::vector<std::size_t>(static_cast<std::size_t>(nv), std::size_t(1)), sharp);
-    std::vector<std::size_t> cluster_of(anomalies.size(), std::size_t(-1));
-    std::vector<std::array<double, 2>> cluster_shape(clusters.size());
-    for (std::size_t k = 0; k < clusters.size(); ++k) {
-      for (std::size_t i : clusters[k].anomalies)
-        cluster_of[i] = k;
-      std::set<int> cluster_vertices;
-      for (std::size_t i : clusters[k].anomalies)
-        cluster_vertices.insert(anomalies[i].vertex);
-      Vec3 mean{0, 0, 0};
-      for (int v : cluster_vertices)
-        mean = mean + (1.0 / double(cluster_vertices.size())) * points[std::size_t(v)];
-      double c[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-      for (int v : cluster_vertices) {
-        const Vec3 d = points[std::size_t(v)] - mean;
-        for (int r = 0; r < 3; ++r)
-          for (int q = 0; q < 3; ++q)
-            c[r][q] += d[std::size_t(r)] * d[std::size_t(q)] / double(cluster_vertices.size());
-      }
-      cluster_shape[k] = HL::internal::largest_spreads(c);
-    }
-    for (const auto& region : regions) {
-      if (region.anomalies.empty() || region.faces.empty())
-        continue;
-      HL::Highlight_line_irregularity<TriangleMesh> irregularity;
-      irregularity.faces.reserve(region.faces.size());
-      for (int f : region.faces)
-        irregularity.faces.push_back(local.face_handles[std::size_t(f)]);
-      std::set<std::size_t> lines_seen;
-      int peak = region.centre;
-      for (std::size_t i : region.anomalies) {
-        const HL::internal::Anomaly& a = anomalies[i];
-        lines_seen.insert(a.line);
-        if (a.score > irregularity.score) {
-          irregularity.score = a.score;
-          peak = a.vertex;
-        }
-        irregularity.max_bending = (std::max)(irregularity.max_bending, a.bending);
-      }
-      irregularity.peak_vertex = local.vertex_handles[std::size_t(peak)];
-      irregularity.number_of_anomalies = region.anomalies.size();
-      irregularity.number_of_lines = lines_seen.size();
-      irregularity.number_of_light_setups = region.setups;
-
-      // Local or not: the shape of the cluster of the region's strongest anomaly (its spread
-      // along its two main axes, four standard deviations). The fit of a sample sees a defect
-      // up to 4w away, so a defect up to the detection's scale (R <= 3w/2) spreads its
-      // anomalies over a length of at most 2R + 8w = 11w; longer clusters are shape at another
-      // scale, and those more than twice as long as wide follow a feature.
-      std::size_t strongest = region.anomalies.front();
-      for (std::size_t i : region.anomalies)
-        if (anomalies[i].score > anomalies[strongest].score)
-          strongest = i;
-      const auto& axes = cluster_shape[cluster_of[strongest]];
-      const double length = 4 * axes[0], width = (std::max)(4 * axes[1], w);
-      const double slenderness =
-          (std::min)(1.0, std::pow(2 * width / (std::max)(length, 1e-300), 2));
-      const double extent = (std::min)(1.0, std::pow(11 * w / (std::max)(length, 1e-300), 2));
-      const double seeing =
-          double((std::max)(std::size_t(1), scoring_setups[std::size_t(region.centre)]));
-      irregularity.confidence =
-          (std::min)(1.0, double(region.setups) / seeing) * slenderness * extent;
-      if (slenderness < 1) {
-        irregularity.kind = HL::Irregularity_kind::ELONGATED;
-      } else if (extent < 1) {
-        irregularity.kind = HL::Irregularity_kind::EXTENDED;
-      } else {
-        irregularity.kind = dent_or_bump(peak, region.faces);
-      }
-      found.push_back(std::move(irregularity));
-    }
+  std::vector<std::size_t> order;
+  if (!options.local_residual) {
+    if (!sweep_at_scale(options.scale, 0, 1))
+      return out; // cancelled: no region
+    for (std::size_t i = 0; i < found.size(); ++i)
+      order.push_back(i);
+    std::stable_sort(order.begin(), order.end(), stronger);
   } else {
-    const int join_rings = (std::max)(1, int(std::ceil(options.scale)));
-    // A region must show in a share `minimum_evidence` of the setups that can see it.
-    std::vector<std::size_t> minimum_setups(static_cast<std::size_t>(nv));
-    for (int v = 0; v < nv; ++v)
-      minimum_setups[std::size_t(v)] = (std::max)(
-          std::size_t(1),
-          std::size_t(
-              std::ceil(options.minimum_evidence * double(scoring_setups[std::size_t(v)]) - 1e-9)));
-    const auto regions = HL::internal::group_anomalies(corners, nv, anomalies, join_rings,
-                                                       options.margin, minimum_setups, sharp);
-    for (const auto& region : regions) {
-      if (region.anomalies.empty())
+    // Several scales (`number_of_scales`): the residual at scale w sees defects of radius up
+    // to 3w/2 (wider ones move the lines over the fit's window too, and are partly absorbed
+    // into the prediction), so the sweep can be repeated at 2w, 4w, ...; the lines of each are
+    // twice as far apart as those of the one before, so it costs about half as much. A region
+    // keeps its best scale: the strongest region first, then every region that shares no face
+    // with a stronger one.
+    const std::size_t passes = std::size_t(options.scales);
+    for (std::size_t pass = 0; pass < passes; ++pass)
+      if (!sweep_at_scale(options.scale * double(std::size_t(1) << pass), pass, passes))
+        return out; // cancelled: no region
+    std::vector<std::size_t> all(found.size());
+    for (std::size_t i = 0; i < found.size(); ++i)
+      all[i] = i;
+    std::stable_sort(all.begin(), all.end(), stronger);
+    // A region found at a coarser scale takes the faces (and the peak) of the strongest region
+    // of a finer scale centred in it: the finer scale places a defect more precisely and its
+    // region is sized to it (about 2w + margin in radius), the coarser one, with less noise
+    // and a fit that reaches beyond wide defects, says how strong and how local it is.
+    std::vector<char> taken(nf, 0), used(found.size(), 0), in_region(std::size_t(nv), 0);
+    for (std::size_t i : all) {
+      if (used[i])
         continue;
-      HL::Highlight_line_irregularity<TriangleMesh> irregularity;
-      irregularity.faces.reserve(region.faces.size());
-      for (int f : region.faces)
-        irregularity.faces.push_back(local.face_handles[std::size_t(f)]);
-      std::set<std::size_t> lines_seen, setups_seen;
-      for (std::size_t i : region.anomalies) {
-        const HL::internal::Anomaly& a = anomalies[i];
-        lines_seen.insert(a.line);
-        setups_seen.insert(a.setup);
-        if (a.score > irregularity.score) {
-          irregularity.score = a.score;
-          irregularity.peak_vertex = local.vertex_handles[std::size_t(a.vertex)];
+      std::size_t faces_of = i;
+      for (int f : found_faces[i])
+        for (int v : corners[std::size_t(f)])
+          in_region[std::size_t(v)] = 1;
+      for (std::size_t j : all)
+        if (!used[j] && found[j].scale < found[i].scale &&
+            in_region[std::size_t(found_centre[j])]) {
+          faces_of = j;
+          break;
         }
-        irregularity.max_bending = (std::max)(irregularity.max_bending, a.bending);
+      for (int f : found_faces[i])
+        for (int v : corners[std::size_t(f)])
+          in_region[std::size_t(v)] = 0;
+      bool overlaps = false;
+      for (int f : found_faces[faces_of])
+        overlaps = overlaps || taken[std::size_t(f)];
+      if (overlaps)
+        continue;
+      for (int f : found_faces[faces_of])
+        taken[std::size_t(f)] = 1;
+      used[i] = used[faces_of] = 1;
+      if (faces_of != i) {
+        found[i].faces = found[faces_of].faces;
+        found[i].peak_vertex = found[faces_of].peak_vertex;
       }
-      irregularity.number_of_anomalies = region.anomalies.size();
-      irregularity.number_of_lines = lines_seen.size();
-      irregularity.number_of_light_setups = setups_seen.size();
-
-      // The shape of the anomalies: their spread along the two main axes (standard deviations
-      // of the positions of their vertices, principal axes of the covariance).
-      std::set<int> anomaly_vertices;
-      for (std::size_t i : region.anomalies)
-        anomaly_vertices.insert(anomalies[i].vertex);
-      Vec3 mean{0, 0, 0};
-      for (int v : anomaly_vertices) {
-        const double* p = local.point(v);
-        mean = mean + (1.0 / double(anomaly_vertices.size())) * Vec3{p[0], p[1], p[2]};
-      }
-      double c[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-      for (int v : anomaly_vertices) {
-        const double* p = local.point(v);
-        const Vec3 d{p[0] - mean[0], p[1] - mean[1], p[2] - mean[2]};
-        for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j)
-            c[i][j] += d[std::size_t(i)] * d[std::size_t(j)] / double(anomaly_vertices.size());
-      }
-      const auto axes = HL::internal::largest_spreads(c);
-      const double w = options.scale * mean_edge;
-      const double length = 4 * axes[0], width = (std::max)(4 * axes[1], w);
-      // A defect is local: the response to one of radius R spreads over R + 3w/2 from its
-      // centre, so a defect up to the detection's scale (R <= 3w/2) spreads its anomalies over
-      // a length of at most 6w. Larger or longer regions are shape at another scale: design.
-      const double slenderness =
-          (std::min)(1.0, std::pow(2 * width / (std::max)(length, 1e-300), 2));
-      const double locality = (std::min)(1.0, std::pow(6 * w / (std::max)(length, 1e-300), 2));
-      std::size_t seeing = 1;
-      for (std::size_t i : region.anomalies)
-        seeing = (std::max)(seeing, scoring_setups[std::size_t(anomalies[i].vertex)]);
-      irregularity.confidence =
-          (std::min)(1.0, double(setups_seen.size()) / double(seeing)) * slenderness * locality;
-      if (slenderness < 1) {
-        irregularity.kind = HL::Irregularity_kind::ELONGATED;
-      } else if (locality < 1) {
-        irregularity.kind = HL::Irregularity_kind::EXTENDED;
-      } else {
-        int peak = 0; // the strongest anomaly's vertex
-        double best = -1;
-        for (std::size_t i : region.anomalies)
-          if (anomalies[i].score > best) {
-            best = anomalies[i].score;
-            peak = anomalies[i].vertex;
-          }
-        irregularity.kind = dent_or_bump(peak, region.faces);
-      }
-      found.push_back(std::move(irregularity));
+      order.push_back(i);
     }
   }
-  std::stable_sort(found.begin(), found.end(), [](const auto& a, const auto& b) {
-    return a.confidence * a.score > b.confidence * b.score;
-  });
-  for (auto& irregularity : found)
-    *out++ = std::move(irregularity);
+  for (std::size_t i : order)
+    *out++ = std::move(found[i]);
   return out;
 }
 

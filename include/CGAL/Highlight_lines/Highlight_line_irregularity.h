@@ -93,8 +93,15 @@ struct Highlight_line_irregularity
   /// `min(1, (2 max(b, w) / l)^2)` (small for a region elongated along a feature) and
   /// `min(1, (6w / l)^2)` (small for a region much larger than a defect), where `l` and `b`
   /// are four standard deviations of the positions of the anomalies along their two main axes
-  /// and `w` the detection scale. Regions are reported by decreasing `confidence * score`.
+  /// and `w` the detection scale (with `local_residual`, `11w` in place of `6w`, and on a
+  /// mirror symmetric surface times `min(1, (a/a0)^2)`, `a` the region's asymmetry and `a0`
+  /// the surface's own: symmetric regions are design). Regions are reported by decreasing
+  /// `confidence * score`.
   double confidence = 0;
+  /// The detection scale `w` (in mean edge lengths) of the sweep that found the region: the
+  /// scale `detection_scale`, or with `local_residual` the one of its scales at which the
+  /// region was strongest.
+  double scale = 0;
 };
 
 } // namespace Highlight_lines

@@ -37,6 +37,7 @@ enum maximum_incidence_angle_t { maximum_incidence_angle };
 enum minimum_confidence_t { minimum_confidence };
 enum all_sides_t { all_sides };
 enum local_residual_t { local_residual };
+enum number_of_scales_t { number_of_scales };
 // Internal, for the detection's sweeps: an edge over max_levels_per_edge is dropped with its
 // faces (the rule before the facing window, see internal::Level_window).
 enum drop_faces_over_cap_t { drop_faces_over_cap };
@@ -109,6 +110,7 @@ CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(maximum_incidence_angle_t, maximum_incidenc
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(minimum_confidence_t, minimum_confidence)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(all_sides_t, all_sides)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(local_residual_t, local_residual)
+CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(number_of_scales_t, number_of_scales)
 
 #undef CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER
 

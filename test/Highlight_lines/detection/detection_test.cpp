@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <fstream>
 #include <iostream>
 #include <cmath>
@@ -62,14 +63,46 @@ std::vector<HB::Irregularity> detect_from_above(const HB::Mesh& mesh)
 }
 
 // The detection with the local residual (issue 16, opt-in); `all_sides` as given.
-std::vector<HB::Irregularity> detect_local_residual(const HB::Mesh& mesh, bool all_sides)
+std::vector<HB::Irregularity> detect_local_residual(const HB::Mesh& mesh, bool all_sides,
+                                                    int scales = 1)
 {
   std::vector<HB::Irregularity> found;
   CGAL::detect_highlight_line_irregularities(
       mesh, HL::default_light_setup(mesh, HLP::number_of_lines(30)), std::back_inserter(found),
-      HLP::local_residual(HLP::all_sides(all_sides), true));
+      HLP::local_residual(HLP::number_of_scales(HLP::all_sides(all_sides), scales), true));
   return found;
 }
+
+// The mirror symmetry of a Surface_mesh (its vertices in index order).
+std::vector<Vec3> points_of(const HB::Mesh& mesh)
+{
+  std::vector<Vec3> points;
+  for (auto v : vertices(mesh))
+    points.push_back(Vec3{mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()});
+  return points;
+}
+
+std::vector<std::array<int, 3>> faces_of(const HB::Mesh& mesh)
+{
+  std::vector<std::array<int, 3>> faces;
+  for (auto f : CGAL::faces(mesh)) {
+    std::array<int, 3> c{};
+    std::size_t j = 0;
+    for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+      c[j++] = int(v);
+    faces.push_back(c);
+  }
+  return faces;
+}
+
+struct Mirror_symmetry_of_mesh
+{
+  explicit Mirror_symmetry_of_mesh(const HB::Mesh& mesh)
+      : symmetry(points_of(mesh), faces_of(mesh), HB::mean_edge_length(mesh))
+  {
+  }
+  HLI::Mirror_symmetry symmetry;
+};
 
 // Recall and precision over seeds 1..8, four defects of radius 5 ē per hood, and how many
 // defects a region is located at, for `detect(mesh)`.
@@ -441,39 +474,6 @@ TEST(Detection, ReportsDentsAndBumpsWithFullConfidenceOnSmoothHoods)
   EXPECT_GT(bumps, 0u);
 }
 
-// The bundled demo (scripts/demo, part 3): the Beetle with the dent fair_with_highlight_lines
-// presses into its roof; `centre` is the dent's centre vertex.
-HB::Mesh demo_beetle(HB::vertex_descriptor& centre)
-{
-  HB::Mesh mesh;
-  std::ifstream in(std::string(HIGHLIGHT_LINES_DATA_DIR) + "/beetle.off");
-  if (!in || !CGAL::IO::read_OFF(in, mesh))
-    throw std::runtime_error("cannot read the bundled beetle");
-  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(mesh);
-  const double diagonal =
-      std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
-                CGAL::square(box.zmax() - box.zmin()));
-  const HB::Point wanted(0.04, box.ymax(), -0.12);
-  centre = *vertices(mesh).begin();
-  for (auto v : vertices(mesh))
-    if (CGAL::squared_distance(mesh.point(v), wanted) <
-        CGAL::squared_distance(mesh.point(centre), wanted))
-      centre = v;
-  const HB::Point c = mesh.point(centre);
-  const double radius = 0.6 * 0.07 * diagonal, depth = 0.006 * diagonal;
-  std::vector<std::pair<HB::vertex_descriptor, HB::Point>> moved;
-  for (auto v : vertices(mesh)) {
-    const double r2 = CGAL::squared_distance(mesh.point(v), c) / (radius * radius);
-    if (r2 < 1)
-      moved.emplace_back(v, mesh.point(v) -
-                                depth * (1 - r2) * (1 - r2) * (1 - r2) *
-                                    CGAL::Polygon_mesh_processing::compute_vertex_normal(v, mesh));
-  }
-  for (const auto& m : moved)
-    mesh.point(m.first) = m.second;
-  return mesh;
-}
-
 bool holds(const HB::Mesh& mesh, const HB::Irregularity& r, HB::vertex_descriptor v)
 {
   for (auto f : r.faces)
@@ -487,7 +487,7 @@ bool holds(const HB::Mesh& mesh, const HB::Irregularity& r, HB::vertex_descripto
 TEST(Detection, TheDemoRoofDentComesFirst)
 {
   HB::vertex_descriptor centre;
-  const HB::Mesh mesh = demo_beetle(centre);
+  const HB::Mesh mesh = HB::demo_beetle(centre);
   std::vector<HB::Irregularity> found;
   CGAL::detect_highlight_line_irregularities(
       mesh, HL::default_light_setup(mesh, HLP::number_of_lines(60)), std::back_inserter(found),
@@ -545,9 +545,12 @@ TEST(LocalResidual, LocatesSmallDefectsOnHoodsAndNothingElse)
 }
 
 // Regions sized to the defect: every vertex of a region within 2w + margin of its centre (and
-// the other corners of its faces one edge further), the centre within 2w of the peak (w = 3 ē,
-// margin 2 ē: 14 ē plus an edge), on a shared scan with defects 0.2 ē high, where the clusters
-// of the bending measure cover much of the mesh (benchmark_detection: 76 % of its vertices).
+// the other corners of its faces one edge further), the centre within 2w of the peak (w its
+// scale, 3 ē, margin 2 ē: 14 ē plus an edge), on a shared scan with defects
+// 0.2 ē high, where the clusters of the bending measure cover much of the mesh
+// (benchmark_detection: 76 % of its vertices). With number_of_scales(2), a region of the
+// coarser scale (6 ē: 26 ē plus an edge) that holds the centre of one of the finer scale takes
+// its faces.
 TEST(LocalResidual, RegionsAreSizedToTheDefect)
 {
   HB::Mesh mesh;
@@ -556,23 +559,108 @@ TEST(LocalResidual, RegionsAreSizedToTheDefect)
     GTEST_SKIP() << "shared mesh rocker-arm.off not found";
   const auto defects = HB::inject_defects(mesh, 4, 5.0, 0.2, 1, [](auto) { return true; });
   const double e = HB::mean_edge_length(mesh);
-  const auto found = detect_local_residual(mesh, true);
+  for (int scales : {1, 2}) {
+    const auto found = detect_local_residual(mesh, true, scales);
+    ASSERT_FALSE(found.empty());
+    for (const auto& r : found) {
+      ASSERT_TRUE(r.scale == 3 || (scales == 2 && r.scale == 6)) << r.scale;
+      for (auto f : r.faces)
+        for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+          ASSERT_LT(std::sqrt(CGAL::squared_distance(mesh.point(v), mesh.point(r.peak_vertex))),
+                    (4 * r.scale + 4) * e)
+              << HB::describe(r) << ", scale " << r.scale;
+    }
+    // And it locates the defects there (the bending measure: none of 8 at 0.2 ē in
+    // benchmark_detection, seeds 1-2).
+    std::size_t located = 0;
+    for (bool l : HB::located_defects(mesh, defects, found))
+      located += l;
+    std::cout << "rocker-arm, seed 1, 0.2 ē, " << scales << " scale(s): located " << located
+              << " of " << defects.size() << "\n";
+    // Measured: 4 of 4 with 1 and 2 scales; 1 of 4 when any peak within 4w of a region twice
+    // as strong was dropped as a side lobe (the defects next to the arm's fillets were lost).
+    EXPECT_GE(located, 3u) << scales;
+  }
+}
+
+// The mirror symmetry of a surface, the rule by which the local residual tells design from
+// defects on symmetric shapes: found on the bundled Beetle (exactly symmetric: its own
+// asymmetry is below the floor ē/50), where the demo's roof dent breaks it by its depth at its
+// centre; not found on a smooth hood whose cross term 0.05xy no mirror keeps.
+TEST(LocalResidual, FindsTheMirrorSymmetryOfDesignAndTheAsymmetryOfADefect)
+{
+  HB::vertex_descriptor centre;
+  const HB::Mesh dented = HB::demo_beetle(centre);
+  HB::Mesh beetle;
+  std::ifstream in(std::string(HIGHLIGHT_LINES_DATA_DIR) + "/beetle.off");
+  ASSERT_TRUE(in && CGAL::IO::read_OFF(in, beetle));
+  const double e = HB::mean_edge_length(beetle);
+  const Mirror_symmetry_of_mesh original(beetle), with_dent(dented);
+  ASSERT_TRUE(original.symmetry.is_symmetric());
+  EXPECT_DOUBLE_EQ(original.symmetry.tolerance(), 0.02 * e);
+  ASSERT_TRUE(with_dent.symmetry.is_symmetric()); // a dent is local
+  EXPECT_LT(original.symmetry.asymmetry(int(centre)), 1e-3 * e);
+  // The dent is 0.006 of the diagonal deep (0.95 ē); its mirror image lies off the dent.
+  const double depth =
+      std::sqrt(CGAL::squared_distance(beetle.point(centre), dented.point(centre)));
+  EXPECT_GT(with_dent.symmetry.asymmetry(int(centre)), 0.9 * depth);
+  EXPECT_FALSE(Mirror_symmetry_of_mesh(smooth_hood(1)).symmetry.is_symmetric());
+}
+
+// The demo's --detect mode with the local residual (60 lines, 3 x 4 light setups): the roof
+// dent comes first, a dent, with confidence 0.92; the design of the car (measured: 33 regions,
+// confidence at most 0.0054, all symmetric) stays far below the level at which the automatic
+// mode fairs (0.5). Measured before the symmetry rule: the dent 10th, called a bump, a design
+// region of confidence 0.64.
+TEST(LocalResidual, TheDemoRoofDentComesFirstAndTheDesignIsLeftAlone)
+{
+  HB::vertex_descriptor centre;
+  const HB::Mesh mesh = HB::demo_beetle(centre);
+  std::vector<HB::Irregularity> found;
+  CGAL::detect_highlight_line_irregularities(
+      mesh, HL::default_light_setup(mesh, HLP::number_of_lines(60)), std::back_inserter(found),
+      HLP::local_residual(HLP::number_of_offsets(4), true));
   ASSERT_FALSE(found.empty());
-  for (const auto& r : found)
-    for (auto f : r.faces)
-      for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
-        ASSERT_LT(std::sqrt(CGAL::squared_distance(mesh.point(v), mesh.point(r.peak_vertex))),
-                  16 * e)
-            << HB::describe(r);
-  // And it locates the defects there (the bending measure: none of 8 at 0.2 ē in
-  // benchmark_detection, seeds 1-2).
-  std::size_t located = 0;
-  for (bool l : HB::located_defects(mesh, defects, found))
-    located += l;
-  std::cout << "rocker-arm, seed 1, 0.2 ē: located " << located << " of " << defects.size() << "\n";
-  // Measured: 4 of 4; 1 of 4 when any peak within 4w of a region twice as strong was dropped as
-  // a side lobe (the defects next to the arm's fillets were lost).
-  EXPECT_GE(located, 3u);
+  EXPECT_TRUE(holds(mesh, found[0], centre)) << HB::describe(found[0]);
+  EXPECT_EQ(found[0].kind, HL::Irregularity_kind::DENT);
+  EXPECT_GE(found[0].confidence, 0.9);
+  for (std::size_t i = 1; i < found.size(); ++i)
+    EXPECT_LT(found[i].confidence, 0.01) << HB::describe(found[i]);
+}
+
+// On the shared Beetle, dents and bumps 0.2 ē high (seeds 1-2, 2 x 4): each one found ranks
+// above every region of the undented Beetle (measured: 6 of 8, the two others are not found;
+// 0 of 8 before the symmetry rule, when a round design bump on the midplane had confidence 1),
+// and half of them pass the level at which the automatic mode fairs (measured: 3 of 6, with
+// confidence 0.67 to 1; none when the shape of a defect's anomalies was measured with those of
+// the symmetric design next to it, which made them look elongated).
+TEST(LocalResidual, RanksDefectsAboveTheDesignOfASymmetricShape)
+{
+  HB::Mesh original;
+  std::ifstream in(test::shared_data("beetle.off"));
+  if (!in || !CGAL::IO::read_OFF(in, original))
+    GTEST_SKIP() << "shared mesh beetle.off not found";
+  const auto own = detect_local_residual(original, true);
+  std::size_t above = 0, defects = 0, confident = 0;
+  for (unsigned seed = 1; seed <= 2; ++seed) {
+    HB::Mesh mesh = original;
+    const auto injected = HB::inject_defects(mesh, 4, 5.0, 0.2, seed, [](auto) { return true; });
+    const auto found = detect_local_residual(mesh, true);
+    const auto holds_defect = HB::regions_of_defects(mesh, injected, found);
+    defects += injected.size();
+    for (std::size_t r : holds_defect) {
+      if (r == std::size_t(-1))
+        continue;
+      bool first = true;
+      for (const auto& o : own)
+        first = first && HB::stronger(found[r], o);
+      above += first;
+      confident += found[r].confidence >= 0.5;
+    }
+  }
+  EXPECT_EQ(defects, 8u);
+  EXPECT_GE(above, 6u);
+  EXPECT_GE(confident, 3u);
 }
 
 // Line density from the mesh: with lights 6 times too far apart for the defects (5 lines over
@@ -877,6 +965,8 @@ TEST(Detection, RejectsParametersOutOfTheirDomain)
   EXPECT_TRUE(rejects(HLP::minimum_evidence(1.5)));
   EXPECT_TRUE(rejects(HLP::region_margin(-1)));
   EXPECT_TRUE(rejects(HLP::maximum_incidence_angle(95.0)));
+  EXPECT_TRUE(rejects(HLP::number_of_scales(0)));
+  EXPECT_TRUE(rejects(HLP::number_of_scales(5)));
   EXPECT_TRUE(found.empty());
 }
 
@@ -968,7 +1058,7 @@ TEST(DetectAndFair, SurfaceMeshAndPolyhedronAgree)
 TEST(DetectAndFair, FairsTheDemoRoofDentAndLeavesTheDesignAlone)
 {
   HB::vertex_descriptor centre;
-  HB::Mesh mesh = demo_beetle(centre);
+  HB::Mesh mesh = HB::demo_beetle(centre);
   const HB::Mesh dented = mesh;
   const auto repairs = CGAL::detect_and_fair_highlight_line_irregularities(
       mesh, HL::default_light_setup(mesh, HLP::number_of_lines(60)),
