@@ -26,39 +26,9 @@ namespace internal {
 // the result.
 inline std::array<vector3::Vec3, 3> eigenvectors(const double (&c)[3][3])
 {
-  double a[3][3], v[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      a[i][j] = c[i][j];
-  for (int sweep = 0; sweep < 50; ++sweep) {
-    const double off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
-    if (!(off > 1e-30 * (a[0][0] * a[0][0] + a[1][1] * a[1][1] + a[2][2] * a[2][2])))
-      break;
-    for (int p = 0; p < 2; ++p)
-      for (int q = p + 1; q < 3; ++q) {
-        if (a[p][q] == 0)
-          continue;
-        const double theta = (a[q][q] - a[p][p]) / (2 * a[p][q]);
-        const double t =
-            (theta >= 0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1));
-        const double cs = 1 / std::sqrt(t * t + 1), sn = t * cs;
-        for (int k = 0; k < 3; ++k) {
-          const double kp = a[k][p], kq = a[k][q];
-          a[k][p] = cs * kp - sn * kq;
-          a[k][q] = sn * kp + cs * kq;
-        }
-        for (int k = 0; k < 3; ++k) {
-          const double pk = a[p][k], qk = a[q][k];
-          a[p][k] = cs * pk - sn * qk;
-          a[q][k] = sn * pk + cs * qk;
-        }
-        for (int k = 0; k < 3; ++k) {
-          const double kp = v[k][p], kq = v[k][q];
-          v[k][p] = cs * kp - sn * kq;
-          v[k][q] = sn * kp + cs * kq;
-        }
-      }
-  }
+  std::array<double, 3> values;
+  double v[3][3];
+  vector3::symmetric_eigen(c, values, v);
   std::array<vector3::Vec3, 3> axes;
   for (int j = 0; j < 3; ++j)
     axes[std::size_t(j)] = vector3::Vec3{v[0][j], v[1][j], v[2][j]};

@@ -46,6 +46,49 @@ inline bool is_finite(const Vec3& a)
   return std::isfinite(a[0]) && std::isfinite(a[1]) && std::isfinite(a[2]);
 }
 
+// The eigenvalues and unit eigenvectors (unsorted, eigenvector j in column j of `vectors`) of
+// the symmetric 3 x 3 matrix `c`, by Jacobi rotations.
+inline void symmetric_eigen(const double (&c)[3][3], std::array<double, 3>& values,
+                            double (&vectors)[3][3])
+{
+  double a[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      a[i][j] = c[i][j];
+      vectors[i][j] = i == j ? 1 : 0;
+    }
+  for (int sweep = 0; sweep < 50; ++sweep) {
+    const double off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
+    if (!(off > 1e-30 * (a[0][0] * a[0][0] + a[1][1] * a[1][1] + a[2][2] * a[2][2])))
+      break;
+    for (int p = 0; p < 2; ++p)
+      for (int q = p + 1; q < 3; ++q) {
+        if (a[p][q] == 0)
+          continue;
+        const double theta = (a[q][q] - a[p][p]) / (2 * a[p][q]);
+        const double t =
+            (theta >= 0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1));
+        const double cs = 1 / std::sqrt(t * t + 1), sn = t * cs;
+        for (int k = 0; k < 3; ++k) { // columns
+          const double kp = a[k][p], kq = a[k][q];
+          a[k][p] = cs * kp - sn * kq;
+          a[k][q] = sn * kp + cs * kq;
+        }
+        for (int k = 0; k < 3; ++k) { // rows
+          const double pk = a[p][k], qk = a[q][k];
+          a[p][k] = cs * pk - sn * qk;
+          a[q][k] = sn * pk + cs * qk;
+        }
+        for (int k = 0; k < 3; ++k) {
+          const double kp = vectors[k][p], kq = vectors[k][q];
+          vectors[k][p] = cs * kp - sn * kq;
+          vectors[k][q] = sn * kp + cs * kq;
+        }
+      }
+  }
+  values = {a[0][0], a[1][1], a[2][2]};
+}
+
 } // namespace vector3
 } // namespace internal
 } // namespace Highlight_lines
