@@ -161,8 +161,12 @@ public:
     // From now on only the targeted lines count (q_diff), so the next models are computed for
     // their levels only: the neighbourhood's other levels (dense where it turns away from the
     // lights) can hold ten times their nodes.
-    long long lowest = (std::numeric_limits<long long>::max)(),
-              highest = (std::numeric_limits<long long>::min)();
+    if (desired_.empty()) { // an empty window, with levels the node code can double
+      model_window_.lowest = 1;
+      model_window_.highest = 0;
+      return;
+    }
+    long long lowest = desired_.front().start.level, highest = lowest;
     for (const Desired_line& line : desired_) {
       lowest = (std::min)(lowest, line.start.level);
       highest = (std::max)(highest, line.start.level);
