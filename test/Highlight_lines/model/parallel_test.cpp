@@ -165,6 +165,28 @@ TEST(Sweeper, ModelComputedIntoAnExistingOneEqualsTheFreshOne)
   expect_reused_models_are_fresh<CGAL::Parallel_if_available_tag>("parallel if available");
 }
 
+// The same on Polyhedron_3 (handles, not indices): a model reused across a larger and a smaller
+// surface and a sweep step equals the fresh one.
+TEST(Sweeper, ModelComputedIntoAnExistingOneOnAPolyhedron)
+{
+  auto bump = [](double x, double y) {
+    const double r2 = (x - 1) * (x - 1) + (y - 1) * (y - 1);
+    return r2 < 9 ? 0.5 * std::pow(1 - r2 / 9, 3) : 0.1 * x;
+  };
+  const Polyhedron large = to_mesh<Polyhedron>(grid(60, 0.125, -3.75, -3.75, bump, 0.2, 3)),
+                   small = to_mesh<Polyhedron>(grid(20, 0.125, -1.25, -1.25, bump, 0.2, 5));
+  typedef HL::Highlight_line_sweeper<Polyhedron> Sweeper;
+  const Sweeper on_large(large), on_small(small);
+  const Lights lights(Point(0.1, 0, 2), Vector(0, 1, 0), Vector(0.05, 0, 1), 0.1);
+  const auto all = CGAL::parameters::default_values();
+  Sweeper::Model reused;
+  expect_reused_model_is_fresh(on_large, lights, reused, all, "polyhedron");
+  expect_reused_model_is_fresh(on_small, lights, reused, all, "smaller polyhedron");
+  expect_reused_model_is_fresh(on_large, lights.translated(lights.index_direction() * 0.03), reused,
+                               HL::parameters::facing_side_only(true), "polyhedron, sweep step");
+  EXPECT_FALSE(reused.nodes().empty());
+}
+
 #ifdef CGAL_LINKED_WITH_TBB
 
 TEST(Parallel, SharedMeshesAreBitIdentical)
