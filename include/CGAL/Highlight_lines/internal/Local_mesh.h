@@ -14,10 +14,10 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <sstream>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -25,7 +25,9 @@ namespace Highlight_lines {
 namespace internal {
 
 // Maps a sparse or dense element index (as given by an index property map) to a compact id.
-// Dense storage when the whole mesh is processed, hashing when only a face range is.
+// Dense storage when the whole mesh is processed; otherwise an open-addressing hash table
+// (linear probing, at most half full), which a fairing builds once per call for a few
+// thousand elements: a node-based std::unordered_map cost an allocation per element.
 class Compact_ids
 {
 public:
@@ -42,8 +44,14 @@ public:
   {
     if (dense_)
       return key < table_.size() ? table_[key] : none;
-    auto it = map_.find(key);
-    return it == map_.end() ? none : it->second;
+    if (slots_.empty())
+      return none;
+    for (std::size_t s = slot_of(key);; s = (s + 1) & mask_) {
+      if (slots_[s].id == none)
+        return none;
+      if (slots_[s].key == key)
+        return slots_[s].id;
+    }
   }
 
   // Returns the id of `key`, assigning `next` if it has none yet.
@@ -57,15 +65,58 @@ public:
         table_[key] = next;
       return table_[key];
     }
-    auto result = map_.emplace(key, next);
-    inserted = result.second;
-    return result.first->second;
+    if (2 * (size_ + 1) > slots_.size())
+      grow();
+    for (std::size_t s = slot_of(key);; s = (s + 1) & mask_) {
+      if (slots_[s].id == none) {
+        slots_[s] = {key, next};
+        ++size_;
+        inserted = true;
+        return next;
+      }
+      if (slots_[s].key == key) {
+        inserted = false;
+        return slots_[s].id;
+      }
+    }
   }
 
 private:
+  struct Slot
+  {
+    std::size_t key;
+    int id;
+  };
+
+  // Fibonacci hashing: indices of neighbouring elements are often consecutive.
+  std::size_t slot_of(std::size_t key) const
+  {
+    return std::size_t((std::uint64_t(key) * 0x9E3779B97F4A7C15ull) >> shift_);
+  }
+
+  void grow()
+  {
+    std::vector<Slot> old;
+    old.swap(slots_);
+    const std::size_t capacity = old.empty() ? 64 : 2 * old.size();
+    slots_.assign(capacity, Slot{0, none});
+    mask_ = capacity - 1;
+    shift_ = 64;
+    for (std::size_t c = capacity; c > 1; c >>= 1)
+      --shift_;
+    size_ = 0;
+    for (const Slot& slot : old)
+      if (slot.id != none) {
+        bool inserted = false;
+        insert(slot.key, slot.id, inserted);
+      }
+  }
+
   bool dense_ = false;
   std::vector<int> table_;
-  std::unordered_map<std::size_t, int> map_;
+  std::vector<Slot> slots_;
+  std::size_t mask_ = 0, size_ = 0;
+  int shift_ = 64;
 };
 
 // A flat copy of the part of a triangle mesh on which a highlight line model is computed:
