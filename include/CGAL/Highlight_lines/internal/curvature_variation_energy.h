@@ -27,9 +27,9 @@
 // runs (cotangent → fit): benchmark_fairing's hoods end at 0.0149 → 0.0009 ē from the true lines
 // (784 movable vertices; PMP::fair 0.0052), 0.0172 → 0.0039 and 0.0269 → 0.0044 (9,173 and
 // 9,174), the beetle's roof 0.046 → 0.021; benchmark_real_dents (30 cases): RMS to the truth
-// 0.498 → 0.539 × PMP::fair's, highlight deviation 0.646 → 0.710 × (60 cases with --centres 6:
+// 0.498 → 0.539 × PMP::fair's, highlight deviation 0.646 → 0.710 × (54 cases with --centres 6:
 // 0.530 → 0.515 and 0.693 → 0.697); with --jitter 0.3: 0.558 → 0.495 and 0.912 → 0.825, with
-// --jitter 0.45: 1.10 → 1.12 and 1.51 → 1.18 (but 5 → 37 × PMP::fair's time in the median).
+// --jitter 0.45: 1.10 → 1.12 and 1.51 → 1.18 (but 14 → 38 × PMP::fair's time in the median).
 // Hence the switch, and the cotangent default until the real meshes agree.
 //
 // With the weights, areas and normals frozen (at the vertices inside R and their neighbours,
