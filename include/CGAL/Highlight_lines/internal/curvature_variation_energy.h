@@ -19,11 +19,25 @@
 // curvature; an edge opposite two small angles would weigh hundreds of times its share. On
 // well-shaped triangles (every angle above 45°) neither changes anything.
 //
+// The pointwise mean curvature: H_i = K_i · N_i by default, or (Mean_curvature_fit_options,
+// CGAL_HIGHLIGHT_LINES_CURVATURE_VARIATION_FIT) the quadric fit of mean_curvature_fit.h, exact
+// for quadrics on any triangulation. The cotangent H_i does not converge on irregular
+// triangulations, so E grows with their density (the dented hood at jitter 0.3 over 40², 80²,
+// 160² cells: 79, 191, 527; fitted: 61, 77, 83, curvature_variation_test.cpp). Measured, same
+// runs (cotangent → fit): benchmark_fairing's hoods end at 0.0149 → 0.0009 ē from the true lines
+// (784 movable vertices; PMP::fair 0.0052), 0.0172 → 0.0039 and 0.0269 → 0.0044 (9,173 and
+// 9,174), the beetle's roof 0.046 → 0.021; benchmark_real_dents (30 cases): RMS to the truth
+// 0.498 → 0.539 × PMP::fair's, highlight deviation 0.646 → 0.710 × (54 cases with --centres 6:
+// 0.530 → 0.515 and 0.693 → 0.697); with --jitter 0.3: 0.558 → 0.495 and 0.912 → 0.825, with
+// --jitter 0.45: 1.10 → 1.12 and 1.51 → 1.18 (but 14 → 38 × PMP::fair's time in the median).
+// Hence the switch, and the cotangent default until the real meshes agree.
+//
 // With the weights, areas and normals frozen (at the vertices inside R and their neighbours,
 // whose H the edges difference) and the vertices displaced along fixed directions, every H_i is
 // affine in x: E(x) = ½ xᵀ Q x + cᵀ x + r exactly, handed to a sink as add_willmore_quadratic()
 // does.
 
+#include <CGAL/Highlight_lines/internal/mean_curvature_fit.h>
 #include <CGAL/Highlight_lines/internal/willmore_energy.h>
 
 #include <algorithm>
@@ -48,20 +62,44 @@ inline double clamped_edge_weight(double c)
 // the energy vertices (the rows of E), `row_of_vertex` maps a vertex to its row (-1 if none).
 struct Frozen_curvature_variation
 {
+  using Stencil = std::vector<Frozen_willmore_weights::Neighbour>;
   Frozen_willmore_weights weights;
   std::vector<char> inner;
   std::vector<int> row_of_vertex;
   double scale = 1; // ℓ²
+  // The mean curvature's discretisation; with a fit, the points of each row's fit, and once
+  // fit_mean_curvatures() has run, each row's stencil (H_m = Σ f (P_m - P_j) · N_m).
+  Mean_curvature_fit_options fit;
+  std::vector<std::vector<int>> fit_points;
+  std::vector<Stencil> stencil;
+
+  // The stencil of H_m: the fitted one, or the cotangent weights.
+  const Stencil& stencil_of(std::size_t m) const
+  {
+    return stencil.empty() || stencil[m].empty() ? weights.neighbours[m] : stencil[m];
+  }
 };
+
+// The mean curvature of the energy: the cotangent formula unless
+// CGAL_HIGHLIGHT_LINES_CURVATURE_VARIATION_FIT is defined (the fit of mean_curvature_fit.h; see
+// the file comment for the figures).
+inline Mean_curvature_fit_options default_mean_curvature_fit_options()
+{
+  Mean_curvature_fit_options o;
+#ifndef CGAL_HIGHLIGHT_LINES_CURVATURE_VARIATION_FIT
+  o.method = Mean_curvature_fit_options::Method::COTANGENT;
+#endif
+  return o;
+}
 
 // `energy_vertices`: I_R; `neighbours_of(v, out)` appends v's neighbours; every vertex of I_R and
 // of their one-rings must have its full one-ring in `triangles`. `length_scale`: ℓ.
 template <typename Neighbours>
-Frozen_curvature_variation
-freeze_curvature_variation(const std::vector<std::array<double, 3>>& positions,
-                           const std::vector<std::array<int, 3>>& triangles,
-                           const std::vector<int>& energy_vertices, Neighbours&& neighbours_of,
-                           double length_scale)
+Frozen_curvature_variation freeze_curvature_variation(
+    const std::vector<std::array<double, 3>>& positions,
+    const std::vector<std::array<int, 3>>& triangles, const std::vector<int>& energy_vertices,
+    Neighbours&& neighbours_of, double length_scale,
+    const Mean_curvature_fit_options& fit = default_mean_curvature_fit_options())
 {
   Frozen_curvature_variation frozen;
   std::vector<char> seen(positions.size(), 0), is_energy(positions.size(), 0);
@@ -86,10 +124,59 @@ freeze_curvature_variation(const std::vector<std::array<double, 3>>& positions,
     frozen.inner[r] = is_energy[std::size_t(rows[r])];
   }
   frozen.scale = length_scale * length_scale;
+  frozen.fit = fit;
+  if (fit.method == Mean_curvature_fit_options::Method::QUADRIC_FIT) {
+    // The points of each row's fit: its one-ring (complete, from the frozen weights), or its
+    // two-ring over `triangles` when the one-ring is small.
+    std::vector<std::vector<int>> adjacent;
+    frozen.fit_points.resize(rows.size());
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+      std::vector<int>& points = frozen.fit_points[r];
+      for (const auto& n : frozen.weights.neighbours[r])
+        points.push_back(n.vertex);
+      if (int(points.size()) >= fit.minimum_one_ring)
+        continue;
+      if (adjacent.empty()) {
+        adjacent.resize(positions.size());
+        for (const auto& t : triangles)
+          for (int c = 0; c < 3; ++c)
+            for (int d = 1; d < 3; ++d) {
+              std::vector<int>& a = adjacent[std::size_t(t[std::size_t(c)])];
+              const int other = t[std::size_t((c + d) % 3)];
+              if (std::find(a.begin(), a.end(), other) == a.end())
+                a.push_back(other);
+            }
+      }
+      const std::size_t one_ring = points.size();
+      for (std::size_t i = 0; i < one_ring; ++i)
+        for (int u : adjacent[std::size_t(points[i])])
+          if (u != rows[r] && std::find(points.begin(), points.end(), u) == points.end())
+            points.push_back(u);
+    }
+  }
   return frozen;
 }
 
-// H_m = K_m · N_m at `positions`, per frozen row, with the frozen weights and `normals`.
+// Freezes the fitted stencils at `positions` with the unit normals `normals` of the frozen
+// rows (nothing with the cotangent discretisation). A row whose fit is singular keeps the
+// cotangent stencil.
+inline void fit_mean_curvatures(Frozen_curvature_variation& frozen,
+                                const std::vector<std::array<double, 3>>& positions,
+                                const std::vector<std::array<double, 3>>& normals)
+{
+  if (frozen.fit.method != Mean_curvature_fit_options::Method::QUADRIC_FIT)
+    return;
+  const std::size_t rows = frozen.weights.energy_vertices.size();
+  CGAL_precondition(normals.size() == rows);
+  frozen.stencil.assign(rows, {});
+  for (std::size_t m = 0; m < rows; ++m)
+    quadric_fit_stencil(frozen.weights.energy_vertices[m], normals[m], frozen.fit_points[m],
+                        positions, frozen.fit, frozen.stencil[m],
+                        frozen.fit.cotangent_prior ? &frozen.weights.neighbours[m] : nullptr);
+}
+
+// H_m at `positions`, per frozen row, with the frozen stencils and `normals`: K_m · N_m with the
+// cotangent weights, or the fitted stencil's Σ f (P_m - P_j) · N_m.
 inline std::vector<double>
 frozen_mean_curvatures(const Frozen_curvature_variation& frozen,
                        const std::vector<std::array<double, 3>>& positions,
@@ -98,8 +185,14 @@ frozen_mean_curvatures(const Frozen_curvature_variation& frozen,
   const Frozen_willmore_weights& w = frozen.weights;
   CGAL_precondition(normals.size() == w.energy_vertices.size());
   std::vector<double> H(w.energy_vertices.size());
-  for (std::size_t m = 0; m < H.size(); ++m)
-    H[m] = willmore_detail::dot(mean_curvature_normal(w, m, positions), normals[m]);
+  using namespace willmore_detail;
+  for (std::size_t m = 0; m < H.size(); ++m) {
+    const std::array<double, 3>& vm = positions[std::size_t(w.energy_vertices[m])];
+    double h = 0;
+    for (const auto& n : frozen.stencil_of(m))
+      h += n.weight * dot(vm - positions[std::size_t(n.vertex)], normals[m]);
+    H[m] = h;
+  }
   return H;
 }
 
@@ -140,12 +233,13 @@ inline double curvature_variation_value(const Frozen_curvature_variation& frozen
 
 // The quadratic of E in x, to a sink: add_P(v, w, value) with v <= w, once per entry of the
 // upper triangle, add_q(v, value); returns E(0). `normals`: the unit normal N_m of each frozen
-// row m (same order as frozen.weights.energy_vertices). H_m = K_m · N_m with N_m frozen, and
-// ∂K_m/∂x_v = s N_v with a scalar s (Σ_k w_mk if v = m, -w_mv if v is a neighbour), so
-// H = B x + H⁰ with B_mv = s (N_v · N_m). With L = Σ_edges ℓ² c_ij (e_i - e_j)(e_i - e_j)ᵀ, the
-// weighted Laplacian of the edges, E = (B x + H⁰)ᵀ L (B x + H⁰): the matrix is 2 Bᵀ (L B), built
-// row by row with a dense accumulator, which costs a third of the flops of summing each edge's
-// outer product and hands the sink one value per entry instead of about ten.
+// row m (same order as frozen.weights.energy_vertices). H_m = Σ_k w_mk (P_m - P_k) · N_m with
+// the frozen stencil w (the cotangent weights or the fit's) and N_m frozen, so
+// H = B x + H⁰ with B_mv = s (d_v · N_m), s = Σ_k w_mk if v = m, -w_mv if v is in the stencil. With
+// L = Σ_edges ℓ² c_ij (e_i - e_j)(e_i - e_j)ᵀ, the weighted Laplacian of the edges, E = (B x + H⁰)ᵀ
+// L (B x + H⁰): the matrix is 2 Bᵀ (L B), built row by row with a dense accumulator, which costs a
+// third of the flops of summing each edge's outer product and hands the sink one value per entry
+// instead of about ten.
 template <typename AddP, typename AddQ>
 double add_curvature_variation_quadratic(const Frozen_curvature_variation& frozen,
                                          const std::vector<std::array<double, 3>>& positions,
@@ -165,7 +259,7 @@ double add_curvature_variation_quadratic(const Frozen_curvature_variation& froze
   std::vector<double> b_value;
   for (std::size_t m = 0; m < rows; ++m) {
     double own = 0;
-    for (const auto& n : w.neighbours[m]) {
+    for (const auto& n : frozen.stencil_of(m)) {
       own += n.weight;
       const int v = variable_of_vertex[std::size_t(n.vertex)];
       if (v >= 0) {

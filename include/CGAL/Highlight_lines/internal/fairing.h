@@ -365,6 +365,8 @@ private:
     normals.clear();
     for (int v : frozen.weights.energy_vertices)
       normals.push_back(sweeper_.vertex_normals().unit_normal(v));
+    if (frozen.fit.method != Mean_curvature_fit_options::Method::COTANGENT)
+      fit_mean_curvatures(frozen, local_points(), normals);
     return frozen;
   }
 
