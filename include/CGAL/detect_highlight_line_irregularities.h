@@ -21,6 +21,7 @@
 #include <array>
 #include <memory>
 #include <cmath>
+#include <cstdint>
 #include <set>
 #include <string>
 #include <type_traits>
@@ -289,7 +290,10 @@ than one ring from a sharp edge, whose offset exceeds `minimum_bending` mean edg
 They are grouped around their peaks, strongest first, instead of into clusters: the disc of
 radius `2w` around an anomaly that holds anomalies of the most distinct light setups is
 re-centred on their mean, and becomes a region and claims them if they show in
-`minimum_evidence` of the setups that see its centre without the side lobes of earlier regions
+`minimum_evidence` of the setups that see its centre (that face it within the incidence limit
+and scored a sample within `detection_scale` rings of it, not across a sharp edge: lines are
+not scored near their ends and near sharp edges, and a defect there cannot show in them)
+without the side lobes of earlier regions
 (the fit around a defect pulls the samples `3w/2` to `4w` along the same lines the other way:
 an anomaly is a lobe if an earlier region has a stronger anomaly on the same line within `4w`
 of it; a defect next to a stronger feature keeps the anomalies of its lines that do not cross
@@ -297,7 +301,13 @@ the feature); the region is the faces with a vertex within the disc's reach plus
 `region_margin` edge lengths of its centre, reached along edges without crossing a sharp edge
 or an earlier region. So
 regions are sized to the defect (about `2w + margin` in radius, not thousands of faces) and
-a defect next to a feature gets its own region. The `kind` and the `confidence` are those
+a defect next to a feature gets its own region. A region's `score` is its contrast with its
+surroundings, not with its lines: per light setup that showed it, the offset of its strongest
+anomaly from the median of that setup's residuals at the vertices between `2w` and `6w` from
+the region's centre (reached along edges, never across a sharp edge) over their robust
+deviation (at least a quarter of the noise the anomaly was scored against), the median over
+the setups. A defect stands out of a quiet patch; on a scan or a coarse mesh the lines move
+about as much around a feature (an eye, an ear, a tessellated fillet) as on it. The `kind` and the `confidence` are those
 above, computed on the cluster (anomalies less than `detection_scale` edges apart, chained)
 of the region's strongest anomaly, with `11w` in place of `6w` (the fit sees a defect from
 `4w` away).
@@ -332,23 +342,26 @@ surroundings (over twice its reach) on which its inner vertex farthest from the 
 Measured with `benchmark_detection --shared --seeds 2 --local-residual` (radius 5 ē, 2 × 4
 defects per height per shared mesh), the located recall (the region holding the defect lies
 within 3R of it) at 1 / 0.5 / 0.2 / 0.1 ē is .875/.875/.625/.625 on the beetle, .667/.333/.5/.5
-on the bunny, .375/.375/.5/.5 on the camel head, .75/.625/.375/.25 on the fandisk,
-.5/.625/.75/.75 on the rocker arm and .625/.75/.375/.625 on spot, where the bending measure
-locates 0–0.13. The defects found rank above every region of the undented mesh at 0.2 ē in
-0.75 of the cases on the beetle and 0.5 on spot (before the symmetry rule: 0 on both; the
-misses are defects not found at all, and on the beetle 3 of the 6 found pass the fairing level
-0.5, none before), 0.375 on the fandisk and 0 to 0.17 on the bunny, the camel head and the
-rocker arm, which have no mirror symmetry (the camel head's, a scan, is
-accepted but its own asymmetry, 0.21 ē, is as large as the defects). On the bundled demo
-(`benchmark_detection --demo --local-residual`) the roof dent is the first region, a `DENT`
-of confidence 0.92, and the 33 design regions have confidence 0.0054 at most. Two scales
-(`--scales 2`) locate no more defects there and rank fewer above the undented fandisk (0 at
-0.2 ē instead of 0.375), at 1.6 times the cost: one scale is the default. Its precision at
-0.2 ē is lower than the bending measure's on the four meshes where both find regions (beetle
-0.19, camel head 0.26, fandisk 0.54, rocker arm 0.32, against 0.38, 0.5, 0.8 and 1: the
-undented meshes yield 4 to 33 regions), so the local residual is not the default yet. The
-denser lines make it two to three times as slow as the bending measure (3–4 s against 1.4 s on
-the shared Beetle, 39k faces, 36 setups; the symmetry test takes 0.3 s of it).
+on the bunny, .375/.375/.5/.5 on the camel head, .875/.75/.375/.25 on the fandisk,
+.5/.625/.75/.875 on the rocker arm and .875/.875/.875/1 on spot (before the evidence was counted
+among the setups that scored a sample near the centre: .625/.75/.375/.625 on spot), where the
+bending measure locates 0–0.13. The defects found rank above every region of the undented mesh
+at 0.2 ē in 0.75 of the cases on the beetle, 0.875 on spot, 0.5 on the bunny (0.17 before the
+score was the contrast with the surroundings), 0.375 on the fandisk, 0.125 on the camel head
+and 0 on the rocker arm, whose tessellated blends move the lines more than a defect 0.2 ē high
+(the camel head's mirror symmetry, a scan's, is accepted but its own asymmetry, 0.21 ē, is as
+large as the defects). The fandisk's missed defects lie within 1.2–4.3 ē of a sharp edge, where
+the lines are not scored. On the bundled demo (`benchmark_detection --demo --local-residual`)
+the roof dent is the first region, a `DENT` of confidence 0.92, and the 33 design regions have
+confidence 0.0054 at most. Two scales (`--scales 2`) locate no more defects there and rank
+fewer above the undented fandisk, at 1.6 times the cost: one scale is the default. Its
+precision at 0.2 ē is lower than the bending measure's on the four meshes where both find
+regions (beetle 0.185, camel head 0.26, fandisk 0.54, rocker arm 0.31, against 0.38, 0.5, 0.8
+and 1: the undented meshes yield 4 to 34 regions), so the local residual is not the default
+yet. The denser lines make it two to three times as slow as the bending measure (3–4 s against
+1.4 s on the shared Beetle, 39k faces, 36 setups; the symmetry test takes 0.3 s of it; the
+contrast and the evidence rules add about a tenth, 4.4 s to 4.9 s, medians of three
+interleaved runs on a loaded machine, and 2 % of memory).
 
 A defect is only seen where several lines cross it: the lights' spacing and
 `number_of_offsets` set how small a defect can be found. Design features that are not sharp
@@ -639,6 +652,15 @@ OutputIterator detect_highlight_line_irregularities(
     std::vector<double> setup_deviations; // per setup: the noise of its level residuals
     double line_noise_floor = 0.25;
     std::vector<std::vector<double>> level_residuals;
+    // With the local residual: every scored sample (vertex, setup, level residual less the
+    // setup's median).
+    struct Sample
+    {
+      int vertex;
+      std::size_t setup;
+      float value;
+    };
+    std::vector<Sample> samples;
     std::vector<double> distance_value(static_cast<std::size_t>(nv));
     std::vector<Vec3> distance_gradient(static_cast<std::size_t>(nv));
     std::vector<double> gradient_weight(static_cast<std::size_t>(nv));
@@ -851,6 +873,12 @@ OutputIterator detect_highlight_line_irregularities(
             const HL::internal::Robust_statistics stats =
                 HL::internal::robust_statistics_signed(pooled);
             setup_deviations.push_back(stats.count >= 32 ? stats.deviation : -1.0);
+            // Every scored sample, for the noise of the surroundings of a region (below).
+            for (std::size_t l = 0; l < lines.size(); ++l)
+              for (std::size_t i = 0; i < level_residuals[l].size(); ++i)
+                if (sample_vertices[l][i] >= 0)
+                  samples.push_back({sample_vertices[l][i], setup_id,
+                                     float(level_residuals[l][i] - stats.median)});
 
             // The candidates: the peaks of |level residual - median| along each line (one per
             // `gap` samples to either side), scored below once the noise of every setup is known.
@@ -884,6 +912,7 @@ OutputIterator detect_highlight_line_irregularities(
                 a.setup = setup_id;
                 a.score = magnitude[i];
                 a.noise = line_noise;
+                a.value = level[i] - stats.median;
                 a.bending = shift;
                 anomalies.push_back(a);
               }
@@ -1000,13 +1029,44 @@ OutputIterator detect_highlight_line_irregularities(
         anomalies.resize(kept);
       }
 
+      // The setups that can see a defect at a vertex: those facing it within the incidence limit
+      // that scored a sample within `w` of it (`detection_scale` rings, not across a sharp edge).
+      // Facing is not enough: a setup's lines are not scored near their ends, near a sharp edge
+      // or where its lights cross the surface at a grazing angle, and a defect there cannot show
+      // in it (on the shared Spot, this located 7 of 8 defects 0.2 ē high instead of 4).
+      std::vector<std::size_t> seeing_setups(static_cast<std::size_t>(nv), 0);
+      {
+        const std::size_t words = (setup_id + 63) / 64;
+        std::vector<std::uint64_t> mask(std::size_t(nv) * words, 0), next;
+        for (const auto& sample : samples)
+          mask[std::size_t(sample.vertex) * words + sample.setup / 64] |= std::uint64_t(1)
+                                                                          << (sample.setup % 64);
+        const int rings = (std::max)(1, int(std::ceil(scale)));
+        for (int r = 0; r < rings; ++r) {
+          next = mask;
+          for (int v = 0; v < nv; ++v)
+            if (!sharp[std::size_t(v)])
+              adjacency.for_each_neighbour(v, [&](int u) {
+                for (std::size_t k = 0; k < words; ++k)
+                  next[std::size_t(u) * words + k] |= mask[std::size_t(v) * words + k];
+              });
+          mask.swap(next);
+        }
+        for (int v = 0; v < nv; ++v) {
+          std::size_t count = 0;
+          for (std::size_t k = 0; k < words; ++k)
+            for (std::uint64_t m = mask[std::size_t(v) * words + k]; m != 0; m &= m - 1)
+              ++count;
+          seeing_setups[std::size_t(v)] = (std::min)(count, scoring_setups[std::size_t(v)]);
+        }
+      }
       // A region must show in a share `minimum_evidence` of the setups that can see it.
       std::vector<std::size_t> minimum_setups(static_cast<std::size_t>(nv));
       for (int v = 0; v < nv; ++v)
         minimum_setups[std::size_t(v)] = (std::max)(
             std::size_t(1),
-            std::size_t(std::ceil(
-                options.minimum_evidence * double(scoring_setups[std::size_t(v)]) - 1e-9)));
+            std::size_t(std::ceil(options.minimum_evidence * double(seeing_setups[std::size_t(v)]) -
+                                  1e-9)));
       std::vector<Vec3> points(static_cast<std::size_t>(nv));
       for (int v = 0; v < nv; ++v) {
         const double* p = local.point(v);
@@ -1084,9 +1144,91 @@ OutputIterator detect_highlight_line_irregularities(
             members.push_back(i);
         cluster(members, asymmetric_cluster_of, asymmetric_shape);
       }
+      // The samples of each vertex (compressed rows), for the noise of a region's surroundings.
+      std::vector<std::size_t> sample_offsets(std::size_t(nv) + 1, 0);
+      for (const auto& sample : samples)
+        ++sample_offsets[std::size_t(sample.vertex) + 1];
+      for (std::size_t v = 1; v < sample_offsets.size(); ++v)
+        sample_offsets[v] += sample_offsets[v - 1];
+      std::vector<std::pair<std::size_t, float>> vertex_samples(samples.size());
+      {
+        std::vector<std::size_t> fill(sample_offsets.begin(), sample_offsets.end() - 1);
+        for (const auto& sample : samples)
+          vertex_samples[fill[std::size_t(sample.vertex)]++] = {sample.setup, sample.value};
+      }
+      samples.clear();
+      samples.shrink_to_fit();
+      // The contrast of a region with its surroundings: per light setup among its anomalies, the
+      // offset of its strongest anomaly from the median of the samples of the same setup in the
+      // surroundings (between `disc` and `surroundings` from the centre, reached along edges that
+      // cross no sharp edge), over their robust deviation; the median over the setups. A defect
+      // stands out of a quiet patch; the lines of a feature-rich patch (a scan's eyes and ears, a
+      // fillet and its neighbours) move as much around it as in it. -1 if no setup has samples
+      // enough around the region.
+      std::vector<double> distance_to_centre(static_cast<std::size_t>(nv), -1.0);
+      auto local_contrast = [&](const HL::internal::Peak_region& region) {
+        std::vector<int> reached{region.centre}, front{region.centre};
+        const Vec3& at = points[std::size_t(region.centre)];
+        distance_to_centre[std::size_t(region.centre)] = 0;
+        while (!front.empty()) {
+          const int v = front.back();
+          front.pop_back();
+          if (sharp[std::size_t(v)] && v != region.centre)
+            continue;
+          adjacency.for_each_neighbour(v, [&](int u) {
+            if (distance_to_centre[std::size_t(u)] >= 0)
+              return;
+            const double d = norm(points[std::size_t(u)] - at);
+            if (d > surroundings)
+              return;
+            distance_to_centre[std::size_t(u)] = d;
+            reached.push_back(u);
+            front.push_back(u);
+          });
+        }
+        std::vector<std::pair<std::size_t, std::size_t>> strongest_of_setup; // (setup, anomaly)
+        for (std::size_t i : region.anomalies) {
+          const auto& a = anomalies[i];
+          auto it = std::find_if(strongest_of_setup.begin(), strongest_of_setup.end(),
+                                 [&a](const auto& e) { return e.first == a.setup; });
+          if (it == strongest_of_setup.end())
+            strongest_of_setup.emplace_back(a.setup, i);
+          else if (a.score > anomalies[it->second].score)
+            it->second = i;
+        }
+        std::vector<std::vector<double>> values(strongest_of_setup.size());
+        for (int v : reached)
+          if (distance_to_centre[std::size_t(v)] >= disc)
+            for (std::size_t k = sample_offsets[std::size_t(v)];
+                 k < sample_offsets[std::size_t(v) + 1]; ++k)
+              for (std::size_t j = 0; j < strongest_of_setup.size(); ++j)
+                if (strongest_of_setup[j].first == vertex_samples[k].first)
+                  values[j].push_back(double(vertex_samples[k].second));
+        for (int v : reached)
+          distance_to_centre[std::size_t(v)] = -1;
+        std::vector<double> contrasts;
+        for (std::size_t j = 0; j < strongest_of_setup.size(); ++j) {
+          if (values[j].size() < 8)
+            continue;
+          const auto& a = anomalies[strongest_of_setup[j].second];
+          const HL::internal::Robust_statistics around =
+              HL::internal::robust_statistics_signed(values[j]);
+          // At least a quarter of the noise the anomaly's score was measured against.
+          const double floor = 0.25 * std::abs(a.value) / (std::max)(a.score, 1e-300);
+          contrasts.push_back(std::abs(a.value - around.median) /
+                              (std::max)({around.deviation, floor, 1e-300}));
+        }
+        if (contrasts.empty())
+          return -1.0;
+        std::nth_element(contrasts.begin(),
+                         contrasts.begin() + std::ptrdiff_t((contrasts.size() - 1) / 2),
+                         contrasts.end());
+        return contrasts[(contrasts.size() - 1) / 2];
+      };
       for (const auto& region : regions) {
         if (region.anomalies.empty() || region.faces.empty())
           continue;
+        const double contrast = local_contrast(region);
         HL::Highlight_line_irregularity<TriangleMesh> irregularity;
         irregularity.faces.reserve(region.faces.size());
         for (int f : region.faces)
@@ -1106,6 +1248,10 @@ OutputIterator detect_highlight_line_irregularities(
         irregularity.number_of_anomalies = region.anomalies.size();
         irregularity.number_of_lines = lines_seen.size();
         irregularity.number_of_light_setups = region.setups;
+        // The score is the region's contrast with its surroundings, where they have samples
+        // enough; else that of its strongest anomaly against the noise of its line.
+        if (contrast >= 0)
+          irregularity.score = contrast;
 
         // Local or not: the shape of the cluster of the region's strongest anomaly (its spread
         // along its two main axes, four standard deviations). The fit of a sample sees a defect

@@ -73,7 +73,12 @@ struct Highlight_line_irregularity
   /// The region: the faces within the margin of the anomalies, edge-connected.
   std::vector<face_descriptor> faces;
   /// The strongest anomaly: how many robust standard deviations its bending lies above the
-  /// median bending of its line (the larger, the more certain and the more visible).
+  /// median bending of its line (the larger, the more certain and the more visible). With
+  /// `local_residual`, the region's contrast with its surroundings: per light setup that showed
+  /// it, how many robust standard deviations its strongest residual lies from the residuals of
+  /// the same setup around it (between `2w` and `6w` from its centre, not across a sharp edge),
+  /// the median over those setups (where the surroundings hold too few samples, the strongest
+  /// anomaly's score against the noise of its line).
   double score = 0;
   /// The largest bending measured in the region, in radians.
   double max_bending = 0;

@@ -29,6 +29,7 @@ struct Anomaly
   double score = 0;      // robust z-score of the bending on its line
   double bending = 0;    // radians
   double noise = -1;     // the robust deviation of the residuals of its line, if known
+  double value = 0;      // with the local residual: its level residual less its setup's median
 };
 
 struct Anomaly_region
