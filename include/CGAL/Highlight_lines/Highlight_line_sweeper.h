@@ -293,7 +293,7 @@ public:
   Their order, their directions and the order of `points` are unspecified (but the same with
   every concurrency tag), and `points` may hold nodes that no segment joins (the model leaves
   them out). Tracing the lines into their canonical order and building the model, which this
-  leaves out, take about a third of `compute()` on large meshes.
+  leaves out, take a fifth to a quarter of `compute()` on large meshes.
 
   \tparam Index an integer type of at least 32 bits, e.g. `unsigned int` (OpenGL's
   index buffers) or `std::size_t`
