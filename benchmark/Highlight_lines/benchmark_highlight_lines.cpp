@@ -7,10 +7,14 @@
 // light tunnel; 1: every level. With TBB, the model and the sweep are also measured with
 // CGAL::Parallel_if_available_tag.
 //
+// BM_sweep_segments: a sweep step as a viewer needs it, the segments of the lines without tracing
+// them (Highlight_line_sweeper::compute_segments()), into the arrays of the previous step.
+//
 // BM_viewer_light_change: the viewer's (demo/Highlight_lines) time from a change of the lights to
-// the new lines ready for drawing: the highlight distance field (zebra), the lights that fall on
-// the surface, the lines through its Parallel_if_available sweeper, as polylines. The copy to
-// OpenGL's arrays is not included (it needs a window).
+// the new lines ready for drawing: the lights that fall on the surface, the segments of their
+// lines through its Parallel_if_available sweeper (it draws them as GL_LINES; the polylines are
+// traced only when saved), and the highlight distance field only while the zebra view is shown
+// (not here). The copy to OpenGL's arrays is not included (it needs a window).
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Highlight_lines/Highlight_line_sweeper.h>
 #include <CGAL/Highlight_lines/default_light_setup.h>
@@ -25,11 +29,13 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdlib>
 #include <iostream>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace {
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -159,6 +165,31 @@ void BM_sweep_update(benchmark::State& state)
   report(state, total / double(state.iterations()));
 }
 
+template <typename Tag>
+void BM_sweep_segments(benchmark::State& state)
+{
+  const Mesh& mesh = big_mesh();
+  const auto lights = HL::default_light_setup(mesh);
+  typedef HL::Highlight_line_sweeper<Mesh, CGAL::Default, CGAL::Default, Tag> Sweeper;
+  const Sweeper sweeper(mesh);
+  const auto np = HL::parameters::combine(HL::parameters::level_range(levels_of(state, lights)),
+                                          HL::parameters::facing_side_only(state.range(0) == 0));
+  double total = 0;
+  int step = 0;
+  std::vector<K::Point_3> points;
+  std::vector<std::array<unsigned int, 2>> segments;
+  for (auto _ : state) {
+    const auto moved =
+        lights.translated(lights.index_direction() * (lights.spacing() * 0.1 * (++step % 10)));
+    const auto start = std::chrono::steady_clock::now();
+    sweeper.compute_segments(moved, points, segments, np);
+    total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    benchmark::DoNotOptimize(segments.data());
+  }
+  state.counters["segments"] = double(segments.size());
+  report(state, total / double(state.iterations()));
+}
+
 void BM_viewer_light_change(benchmark::State& state)
 {
   viewer::Session session;
@@ -196,6 +227,10 @@ BENCHMARK_TEMPLATE(BM_sweep_update, CGAL::Sequential_tag, true)
     ->Arg(0)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+BENCHMARK_TEMPLATE(BM_sweep_segments, CGAL::Sequential_tag)
+    ->Arg(0)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 #ifdef CGAL_LINKED_WITH_TBB
 // With TBB: the same with CGAL::Parallel_if_available_tag (= Parallel_tag).
 BENCHMARK_TEMPLATE(BM_compute_highlight_lines, CGAL::Parallel_if_available_tag)
@@ -206,6 +241,10 @@ BENCHMARK_TEMPLATE(BM_compute_highlight_lines, CGAL::Parallel_if_available_tag)
 BENCHMARK_TEMPLATE(BM_sweep_update, CGAL::Parallel_if_available_tag)
     ->Arg(0)
     ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_TEMPLATE(BM_sweep_segments, CGAL::Parallel_if_available_tag)
+    ->Arg(0)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 #endif

@@ -187,15 +187,19 @@ struct Camera
 
 // ---- Drawing ----------------------------------------------------------------------------------
 
-// The session's geometry as flat float arrays for glDrawElements, rebuilt when it changes.
+// The session's geometry as flat float arrays for glDrawElements, rebuilt when it changes: the
+// positions and normals only when the mesh moves (not when the lights do), the stripes only
+// while the zebra is shown.
 struct Draw_arrays
 {
-  std::size_t revision = std::size_t(-1), mesh_generation = std::size_t(-1);
+  std::size_t revision = std::size_t(-1), mesh_generation = std::size_t(-1),
+              positions_revision = std::size_t(-1);
   std::vector<float> positions, normals, stripes;
   std::vector<unsigned int> triangles, region_triangles;
   std::vector<std::vector<unsigned int>> detected_triangles;
   std::vector<bool> detected_is_local; // a dent or a bump, not an elongated or extended region
-  std::vector<std::vector<float>> lines, desired;
+  std::vector<float> line_points;      // drawn as GL_LINES by the session's line_segments()
+  std::vector<std::vector<float>> desired;
   std::vector<float> movable;
 
   void update(const Session& s)
@@ -204,17 +208,22 @@ struct Draw_arrays
       return;
     revision = s.revision();
     const Mesh& mesh = s.mesh();
-    positions.clear();
-    normals.assign(s.vertex_normals().begin(), s.vertex_normals().end());
+    if (positions_revision != s.positions_revision() || mesh_generation != s.mesh_generation()) {
+      positions_revision = s.positions_revision();
+      positions.clear();
+      for (Vertex v : vertices(mesh)) {
+        const Point& p = mesh.point(v);
+        positions.insert(positions.end(), {float(p.x()), float(p.y()), float(p.z())});
+      }
+      normals.assign(s.vertex_normals().begin(), s.vertex_normals().end());
+    }
     stripes.clear();
-    const double spacing = CGAL::to_double(s.lights().spacing());
-    for (Vertex v : vertices(mesh)) {
-      const Point& p = mesh.point(v);
-      positions.insert(positions.end(), {float(p.x()), float(p.y()), float(p.z())});
-      const std::size_t i = std::size_t(v);
-      const double d = i < s.distances().size() ? s.distances()[i] : 0.0;
-      // A line (d = m s) runs in the middle of a dark stripe: dark where frac(d/s + 1/4) < 1/2.
-      stripes.push_back(std::isfinite(d) ? float(std::fmod(d / spacing + 0.25, 64.0)) : 0.75f);
+    if (!s.distances().empty()) {
+      const double spacing = CGAL::to_double(s.lights().spacing());
+      stripes.reserve(s.distances().size());
+      for (double d : s.distances())
+        // A line (d = m s) runs in the middle of a dark stripe: dark where frac(d/s + 1/4) < 1/2.
+        stripes.push_back(std::isfinite(d) ? float(std::fmod(d / spacing + 0.25, 64.0)) : 0.75f);
     }
     auto face_corners = [&](Face f, std::vector<unsigned int>& out) {
       for (Vertex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
@@ -246,7 +255,13 @@ struct Draw_arrays
           out.back().insert(out.back().end(), {float(p.x()), float(p.y()), float(p.z())});
       }
     };
-    flatten(s.lines(), lines);
+    line_points.resize(3 * s.line_points().size());
+    for (std::size_t i = 0; i < s.line_points().size(); ++i) {
+      const Point& p = s.line_points()[i];
+      line_points[3 * i] = float(p.x());
+      line_points[3 * i + 1] = float(p.y());
+      line_points[3 * i + 2] = float(p.z());
+    }
     flatten(s.desired_lines(), desired);
     movable.clear();
     for (Vertex v : s.movable_vertices()) {
@@ -319,7 +334,7 @@ void draw_scene(const Session& session, const Draw_arrays& arrays, const Camera&
   glEnableClientState(GL_NORMAL_ARRAY);
   glVertexPointer(3, GL_FLOAT, 0, arrays.positions.data());
   glNormalPointer(GL_FLOAT, 0, arrays.normals.data());
-  if (options.zebra) {
+  if (options.zebra && !arrays.stripes.empty()) {
     glEnable(GL_TEXTURE_1D);
     glBindTexture(GL_TEXTURE_1D, stripe_texture);
     glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
@@ -363,7 +378,10 @@ void draw_scene(const Session& session, const Draw_arrays& arrays, const Camera&
       glColor3f(0.85f, 0.1f, 0.1f);
     else
       glColor3f(0.08f, 0.09f, 0.15f);
-    draw_polylines(arrays.lines);
+    const Segments& segments = session.line_segments();
+    static_assert(sizeof(Segments::value_type) == 2 * sizeof(GLuint), "segments as GLuint pairs");
+    glVertexPointer(3, GL_FLOAT, 0, arrays.line_points.data());
+    glDrawElements(GL_LINES, GLsizei(2 * segments.size()), GL_UNSIGNED_INT, segments.data());
   }
   glPointSize(3);
   glColor3f(0.1f, 0.6f, 0.25f);
@@ -465,7 +483,7 @@ struct App
       return false;
     }
     if (scripted) // the time of each step of a scripted sweep, on the terminal
-      std::printf("lights: %zu lines, updated in %.2f ms\n", session.number_of_lines(),
+      std::printf("lights: %zu segments, updated in %.2f ms\n", session.line_segments().size(),
                   session.update_milliseconds());
     return true;
   }
@@ -925,7 +943,7 @@ struct App
         reset.spacing = CGAL::to_double(session.reference_lights().spacing());
         change_lights(reset);
       }
-      ImGui::Text("%zu lines (lights %lld to %lld)", session.number_of_lines(),
+      ImGui::Text("%zu segments (lights %lld to %lld)", session.line_segments().size(),
                   session.levels().first, session.levels().second);
       ImGui::Text("updated in %.2f ms; frame %.1f ms", session.update_milliseconds(),
                   1000.0 / std::max(ImGui::GetIO().Framerate, 1e-3f));

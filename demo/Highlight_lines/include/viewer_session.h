@@ -49,6 +49,8 @@ typedef HL::Highlight_line_sweeper<Mesh, CGAL::Default, CGAL::Default,
                                    CGAL::Parallel_if_available_tag>
     Sweeper;
 typedef std::vector<std::vector<Point>> Polylines;
+// The segments of the lines as pairs of indices into their points, as OpenGL draws GL_LINES.
+typedef std::vector<std::array<unsigned int, 2>> Segments;
 
 // The light setup as the user moves it: a reference setup (the light tunnel placed over the mesh
 // when it is loaded) turned, tilted, moved across the lights and respaced. Keeping the four
@@ -288,6 +290,7 @@ public:
     }
     path_ = path;
     ++mesh_generation_;
+    ++positions_revision_;
     controls_ = Light_controls();
     controls_.spacing = CGAL::to_double(reference_lights_->spacing());
     region_.clear();
@@ -302,6 +305,8 @@ public:
   bool has_mesh() const { return bool(sweeper_); }
   // Changes whenever something drawn changes (lines, positions, region, detected regions).
   std::size_t revision() const { return revision_; }
+  // Changes whenever the vertex positions (and normals) change.
+  std::size_t positions_revision() const { return positions_revision_; }
   // Changes with each mesh shown (its triangles, not only its positions).
   std::size_t mesh_generation() const { return mesh_generation_; }
   const Mesh& mesh() const { return *mesh_; }
@@ -352,8 +357,20 @@ public:
                       3.14159265358979323846;
     return set_light_controls(c, error);
   }
-  const Polylines& lines() const { return lines_; }
-  std::size_t number_of_lines() const { return lines_.size(); }
+  // The highlight lines as polylines (a closed line repeats its first point), in the model's
+  // canonical order: traced from the model on the first call after a change (the lines drawn
+  // are the segments below, which need no tracing).
+  const Polylines& lines() const
+  {
+    trace_lines();
+    return lines_;
+  }
+  std::size_t number_of_lines() const { return lines().size(); }
+  // The segments of the lines, ready for drawing: pairs of indices into line_points() (which
+  // may hold points no segment uses), in no particular order; the same segments, point for
+  // point, as those of lines() (Highlight_line_sweeper::compute_segments()).
+  const std::vector<Point>& line_points() const { return line_points_; }
+  const Segments& line_segments() const { return line_segments_; }
   // The indices of the lights whose lines are computed.
   const std::pair<long long, long long>& levels() const { return levels_; }
   // Time of the latest light or mesh change to new lines ready for drawing, in milliseconds.
@@ -584,7 +601,7 @@ public:
     const std::string stem = path_.substr(0, path_.size() - ext.size());
     return stem + "_edited" + mesh_io::output_extension(path_);
   }
-  bool save_lines(const std::string& path) const { return write_polylines(path, lines_); }
+  bool save_lines(const std::string& path) const { return write_polylines(path, lines()); }
   bool save_region(const std::string& path) const { return write_face_ids(path, region_); }
   bool save_lights(const std::string& path) const { return write_lights(path, *lights_, levels_); }
 
@@ -614,6 +631,7 @@ private:
     for (Vertex v : vertices(*mesh_))
       mesh_->point(v) = positions[std::size_t(v)];
     sweeper_->update_positions();
+    ++positions_revision_;
     update_normals();
     update_lines();
     update_region_decorations();
@@ -656,6 +674,12 @@ private:
     }
   }
 
+  // The lines shown: those of the visible levels, on the side of the surface facing the lights.
+  auto lines_parameters() const
+  {
+    return HLP::combine(HLP::level_range(levels_), HLP::facing_side_only(true));
+  }
+
   // New lights or a moved mesh: the lights that fall on the surface, the lines through the
   // sweeper (its normals are cached; after set_positions() they were updated once) and, if the
   // zebra is shown, the distance field.
@@ -664,22 +688,10 @@ private:
     const auto start = std::chrono::steady_clock::now();
     lights_ = controls_.applied_to(*reference_lights_);
     levels_ = visible_levels();
-    // Into the model of the previous update, and as model.polylines() into its polylines:
-    // their memory is reused.
-    sweeper_->compute(*lights_, model_,
-                      HLP::combine(HLP::level_range(levels_), HLP::facing_side_only(true)));
-    const Sweeper::Model& model = model_;
-    const auto& nodes = model.nodes();
-    lines_.resize(model.lines().size());
-    for (std::size_t i = 0; i < lines_.size(); ++i) {
-      const auto& line = model.lines()[i];
-      std::vector<Point>& polyline = lines_[i];
-      polyline.clear();
-      for (std::size_t n : line.nodes)
-        polyline.push_back(nodes[n].point);
-      if (line.is_closed && !line.nodes.empty())
-        polyline.push_back(nodes[line.nodes.front()].point);
-    }
+    // The segments only: the polylines are traced when asked for (lines()). Into the arrays of
+    // the previous update: their memory is reused.
+    sweeper_->compute_segments(*lights_, line_points_, line_segments_, lines_parameters());
+    lines_traced_ = false;
     if (distance_field_wanted_)
       update_distances();
     else
@@ -689,12 +701,38 @@ private:
     ++revision_;
   }
 
-  // d = ((P - A0) x H)·N / (Z·N) (eq. 1) of vertex i, on the side facing the lights; NaN elsewhere.
-  double distance(std::size_t i) const
+  // The polylines of the current lights, from the model (into the model of the previous
+  // tracing, and into the polylines: their memory is reused).
+  void trace_lines() const
   {
-    const std::array<double, 3>& a = lights_->base_point_array();
-    const std::array<double, 3>& h = lights_->light_direction_array();
-    const std::array<double, 3>& z = lights_->plane_normal_array();
+    if (lines_traced_)
+      return;
+    lines_traced_ = true;
+    if (!sweeper_ || !lights_) {
+      lines_.clear();
+      return;
+    }
+    sweeper_->compute(*lights_, model_, lines_parameters());
+    const auto& nodes = model_.nodes();
+    lines_.resize(model_.lines().size());
+    for (std::size_t i = 0; i < lines_.size(); ++i) {
+      const auto& line = model_.lines()[i];
+      std::vector<Point>& polyline = lines_[i];
+      polyline.clear();
+      for (std::size_t n : line.nodes)
+        polyline.push_back(nodes[n].point);
+      if (line.is_closed && !line.nodes.empty())
+        polyline.push_back(nodes[line.nodes.front()].point);
+    }
+  }
+
+  // d = ((P - A0) x H)·N / (Z·N) (eq. 1) of vertex i, on the side facing the lights; NaN elsewhere.
+  double distance(std::size_t i) const { return distance(i, *lights_); }
+  double distance(std::size_t i, const Lights& lights) const
+  {
+    const std::array<double, 3>& a = lights.base_point_array();
+    const std::array<double, 3>& h = lights.light_direction_array();
+    const std::array<double, 3>& z = lights.plane_normal_array();
     const double* n = &normals_[3 * i];
     const double zn = z[0] * n[0] + z[1] * n[1] + z[2] * n[2];
     if (!(zn > 1e-12))
@@ -718,27 +756,46 @@ private:
   // All lights would also image the lights far out in the plane on the surface parts almost
   // parallel to it, thousands of short lines bunched at the silhouettes (as does a real
   // reflection, but they hide the surface and cost most of the time).
-  std::pair<long long, long long> visible_levels() const
+  // Moving the lights across by u = offset·s (along I = H x Z) changes every d by -u (W x H
+  // loses u I x H = u Z, and Z·N / Z·N = 1) and keeps their order: the quantiles are taken once
+  // per direction, tilt and mesh position, for the lights without offset, and shifted.
+  std::pair<long long, long long> visible_levels()
   {
-    const std::size_t n = num_vertices(*mesh_);
-    const std::size_t stride = (std::max)(n >> 16, std::size_t(1));
-    std::vector<double> finite;
-    for (std::size_t i = 0; i < n; i += stride) {
-      const double d = distance(i);
-      if (std::isfinite(d))
-        finite.push_back(d);
+    Quantiles& q = quantiles_;
+    if (!q.valid || q.angle_degrees != controls_.angle_degrees ||
+        q.tilt_degrees != controls_.tilt_degrees || q.positions_revision != positions_revision_) {
+      Light_controls unmoved = controls_;
+      unmoved.offset = 0;
+      const Lights lights = unmoved.applied_to(*reference_lights_);
+      const std::size_t n = num_vertices(*mesh_);
+      const std::size_t stride = (std::max)(n >> 16, std::size_t(1));
+      std::vector<double>& finite = q.samples;
+      finite.clear();
+      for (std::size_t i = 0; i < n; i += stride) {
+        const double d = distance(i, lights);
+        if (std::isfinite(d))
+          finite.push_back(d);
+      }
+      const auto quantile = [&](double f) {
+        auto at = finite.begin() + std::ptrdiff_t(f * double(finite.size() - 1));
+        std::nth_element(finite.begin(), at, finite.end());
+        return *at;
+      };
+      q.valid = true;
+      q.angle_degrees = controls_.angle_degrees;
+      q.tilt_degrees = controls_.tilt_degrees;
+      q.positions_revision = positions_revision_;
+      q.none = finite.empty();
+      if (!q.none) {
+        q.low = quantile(0.05);
+        q.high = quantile(0.95);
+      }
     }
-    if (finite.empty())
+    if (q.none)
       return {0, 0};
-    const auto quantile = [&](double q) {
-      auto at = finite.begin() + std::ptrdiff_t(q * double(finite.size() - 1));
-      std::nth_element(finite.begin(), at, finite.end());
-      return *at;
-    };
     const double s = lights_->spacing_value();
-    const double low = quantile(0.05), high = quantile(0.95);
-    return {(long long)std::floor(std::max(low / s, -1e6)),
-            (long long)std::ceil(std::min(high / s, 1e6))};
+    return {(long long)std::floor(std::max(q.low / s - controls_.offset, -1e6)),
+            (long long)std::ceil(std::min(q.high / s - controls_.offset, 1e6))};
   }
 
   void update_region_decorations()
@@ -756,10 +813,15 @@ private:
     }
   }
 
-  std::size_t revision_ = 0, mesh_generation_ = 0;
+  std::size_t revision_ = 0, mesh_generation_ = 0, positions_revision_ = 0;
   std::unique_ptr<Mesh> mesh_;
   std::unique_ptr<Sweeper> sweeper_;
-  Sweeper::Model model_; // the latest lines' model, overwritten by each update
+  // The latest lines: their segments, and the model and polylines traced from them on demand.
+  std::vector<Point> line_points_;
+  Segments line_segments_;
+  mutable Sweeper::Model model_;
+  mutable Polylines lines_;
+  mutable bool lines_traced_ = false;
   std::string path_;
   std::array<double, 3> box_center_{};
   double box_diagonal_ = 1;
@@ -768,8 +830,16 @@ private:
 
   std::optional<Lights> reference_lights_, lights_;
   Light_controls controls_;
-  Polylines lines_;
   std::pair<long long, long long> levels_{0, -1};
+  // The quantiles of d of visible_levels() for the lights without their offset.
+  struct Quantiles
+  {
+    bool valid = false, none = true;
+    double angle_degrees = 0, tilt_degrees = 0;
+    std::size_t positions_revision = 0;
+    double low = 0, high = 0;
+    std::vector<double> samples;
+  } quantiles_;
   double update_milliseconds_ = 0;
 
   std::vector<Face> region_;

@@ -24,8 +24,10 @@
 #include <CGAL/boost/graph/properties.h>
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -280,6 +282,58 @@ public:
   }
 
   /*!
+  Computes the segments of the highlight line model for `lights` without tracing them into
+  lines: what a viewer draws on each light change, e.g. as `GL_LINES` through an index buffer.
+  `points` receives node positions and `segments` pairs of indices into `points`; both are
+  overwritten, and their memory reused.
+
+  The segments are those of the model `compute(lights, np)` returns: each segment between two
+  consecutive nodes of one of its lines (the closing segment of a closed line included) is
+  in `segments` exactly once, with the same points bit for bit, and there are no others.
+  Their order, their directions and the order of `points` are unspecified (but the same with
+  every concurrency tag), and `points` may hold nodes that no segment joins (the model leaves
+  them out). Tracing the lines into their canonical order and building the model, which this
+  leaves out, take a fifth to a quarter of `compute()` on large meshes.
+
+  \tparam Index an integer type of at least 32 bits, e.g. `unsigned int` (OpenGL's
+  index buffers) or `std::size_t`
+  \param lights the light setup.
+  \param points receives the points of the nodes.
+  \param segments receives the segments, as indices into `points`.
+  \param np an optional sequence of named parameters, as for `compute(lights, np)`.
+  */
+  template <typename Index, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+  void compute_segments(const Lights& lights, std::vector<typename Gt::Point_3>& points,
+                        std::vector<std::array<Index, 2>>& segments,
+                        const NamedParameters& np = CGAL::parameters::default_values()) const
+  {
+    static_assert(std::is_integral<Index>::value && sizeof(Index) >= 4,
+                  "Index must be an integer type of at least 32 bits");
+    raw_.keep_levels = false;
+    compute_raw(lights, level_window(np), facing_side_only(np), raw_, false);
+    const std::vector<internal::Raw_node>& nodes = raw_.nodes.nodes;
+    const std::vector<std::array<int, 2>>& raw_segments = raw_.segments.segments;
+    points.resize(nodes.size());
+    segments.resize(raw_segments.size());
+    const internal::Chunks chunks =
+        internal::chunks_for<ConcurrencyTag>(nodes.size(), std::size_t(1) << 15);
+    internal::for_each_chunk<ConcurrencyTag>(chunks,
+                                             [&](std::size_t, std::size_t b, std::size_t e) {
+                                               for (std::size_t i = b; i < e; ++i) {
+                                                 const std::array<double, 3>& p = nodes[i].point;
+                                                 points[i] = typename Gt::Point_3(p[0], p[1], p[2]);
+                                               }
+                                             });
+    const internal::Chunks segment_chunks =
+        internal::chunks_for<ConcurrencyTag>(raw_segments.size(), std::size_t(1) << 15);
+    internal::for_each_chunk<ConcurrencyTag>(
+        segment_chunks, [&](std::size_t, std::size_t b, std::size_t e) {
+          for (std::size_t i = b; i < e; ++i)
+            segments[i] = {Index(raw_segments[i][0]), Index(raw_segments[i][1])};
+        });
+  }
+
+  /*!
   Writes the highlight distance value `d` (eq. 1) of every vertex of the faces the model is
   computed on into `distances`: the field whose level sets `d = m·s` are the highlight lines
   (a node lies where the linear interpolation of `d` along an edge equals `m·s`, eq. 4), so
@@ -341,8 +395,9 @@ public:
     }
   };
 
+  // Without `trace`, out.lines is left as it was (compute_segments() needs no lines).
   void compute_raw(const Lights& lights, const internal::Level_window& options,
-                   bool facing_side_only, Raw_model& out) const
+                   bool facing_side_only, Raw_model& out, bool trace = true) const
   {
     internal::Level_window window = options;
     internal::Highlight_nodes& nodes = out.nodes;
@@ -365,7 +420,8 @@ public:
                                                         lights.spacing_value(), window, nodes);
       internal::connect_highlight_nodes<ConcurrencyTag>(mesh_, nodes, window, out.segments);
     }
-    internal::trace_lines(nodes.nodes, out.segments.segments, out.lines);
+    if (trace)
+      internal::trace_lines(nodes.nodes, out.segments.segments, out.lines);
   }
 
   template <typename NamedParameters>

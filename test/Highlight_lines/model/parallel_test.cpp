@@ -16,6 +16,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -185,6 +187,104 @@ TEST(Sweeper, ModelComputedIntoAnExistingOneOnAPolyhedron)
   expect_reused_model_is_fresh(on_large, lights.translated(lights.index_direction() * 0.03), reused,
                                HL::parameters::facing_side_only(true), "polyhedron, sweep step");
   EXPECT_FALSE(reused.nodes().empty());
+}
+
+// Highlight_line_sweeper::compute_segments(): the segments between consecutive nodes of the
+// model's lines (closing segments included), each once, with the same points bit for bit, and
+// nothing else; every index within the points; the same arrays with every tag, and whatever
+// the arrays held before (they are reused across the calls).
+typedef std::array<double, 6> Segment_bits; // its two points, the smaller first
+
+Segment_bits segment_bits(const Point& p, const Point& q)
+{
+  const std::array<double, 3> a = {p.x(), p.y(), p.z()}, b = {q.x(), q.y(), q.z()};
+  const std::array<double, 3>& first = a < b ? a : b;
+  const std::array<double, 3>& second = a < b ? b : a;
+  return {first[0], first[1], first[2], second[0], second[1], second[2]};
+}
+
+template <typename Sweeper, typename NamedParameters>
+void expect_segments_of_the_model(const Surface_mesh& mesh, const Sweeper& sweeper,
+                                  const Lights& lights, std::vector<Point>& points,
+                                  std::vector<std::array<unsigned int, 2>>& segments,
+                                  const NamedParameters& np, const std::string& what)
+{
+  const typename Sweeper::Model model = sweeper.compute(lights, np);
+  sweeper.compute_segments(lights, points, segments, np);
+  std::vector<Segment_bits> expected, got;
+  for (const auto& line : model.lines()) {
+    const std::size_t n = line.nodes.size();
+    for (std::size_t i = 0; i + 1 < n + (line.is_closed ? 1 : 0); ++i)
+      expected.push_back(segment_bits(model.nodes()[line.nodes[i]].point,
+                                      model.nodes()[line.nodes[(i + 1) % n]].point));
+  }
+  for (const auto& segment : segments) {
+    ASSERT_LT(segment[0], points.size()) << what;
+    ASSERT_LT(segment[1], points.size()) << what;
+    got.push_back(segment_bits(points[segment[0]], points[segment[1]]));
+  }
+  EXPECT_EQ(got.size(), model.number_of_segments()) << what;
+  std::sort(expected.begin(), expected.end());
+  std::sort(got.begin(), got.end());
+  auto same_bits = [](const std::vector<Segment_bits>& a, const std::vector<Segment_bits>& b) {
+    return a.size() == b.size() &&
+           (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(Segment_bits)) == 0);
+  };
+  EXPECT_TRUE(same_bits(expected, got))
+      << what << ": " << got.size() << " segments, the model's lines have " << expected.size();
+  EXPECT_TRUE(std::adjacent_find(got.begin(), got.end()) == got.end())
+      << what << ": a segment twice";
+  // The same arrays from fresh ones, and with the other tag.
+  typedef HL::Highlight_line_sweeper<Surface_mesh, CGAL::Default, CGAL::Default,
+                                     CGAL::Parallel_if_available_tag>
+      Other;
+  std::vector<Point> fresh_points;
+  std::vector<std::array<std::size_t, 2>> fresh_segments;
+  Other(mesh).compute_segments(lights, fresh_points, fresh_segments, np);
+  EXPECT_TRUE(fresh_points == points) << what;
+  ASSERT_EQ(fresh_segments.size(), segments.size()) << what;
+  for (std::size_t i = 0; i < segments.size(); ++i)
+    ASSERT_TRUE(fresh_segments[i][0] == segments[i][0] && fresh_segments[i][1] == segments[i][1])
+        << what << ": segment " << i;
+}
+
+TEST(Sweeper, SegmentsAreThoseOfTheModelsLines)
+{
+  const Surface_mesh refined = shared_mesh("beetle.off", 1), small = shared_mesh("bunny.off"),
+                     fandisk = shared_mesh("fandisk.off"), grid = flat_grid_with_bump();
+  typedef HL::Highlight_line_sweeper<Surface_mesh> Sweeper;
+  const Sweeper on_refined(refined), on_small(small), on_fandisk(fandisk), on_grid(grid);
+  const Lights refined_lights = HL::default_light_setup(refined),
+               small_lights = HL::default_light_setup(small),
+               fandisk_lights = HL::default_light_setup(fandisk);
+  std::vector<Point> points; // reused across all the calls
+  std::vector<std::array<unsigned int, 2>> segments;
+  const auto all = CGAL::parameters::default_values();
+  expect_segments_of_the_model(refined, on_refined, refined_lights, points, segments, all,
+                               "refined beetle");
+  EXPECT_GT(segments.size(), 1000u);
+  for (int step = 1; step < 4; ++step)
+    expect_segments_of_the_model(
+        refined, on_refined,
+        refined_lights.translated(refined_lights.index_direction() *
+                                  (refined_lights.spacing() * 0.3 * step)),
+        points, segments,
+        HL::parameters::combine(
+            HL::parameters::facing_side_only(step % 2 == 0),
+            HL::parameters::level_range(HL::default_level_range(refined, refined_lights))),
+        "refined beetle, sweep step " + std::to_string(step));
+  expect_segments_of_the_model(small, on_small, small_lights, points, segments, all, "bunny");
+  expect_segments_of_the_model(fandisk, on_fandisk, fandisk_lights, points, segments,
+                               HL::parameters::facing_side_only(true), "fandisk, facing side");
+  expect_segments_of_the_model(grid, on_grid, flat_grid_lights, points, segments, all,
+                               "grid, vertex nodes and highlight edges");
+  expect_segments_of_the_model(refined, on_refined, refined_lights, points, segments,
+                               HL::parameters::max_levels_per_edge(2),
+                               "refined beetle, capped edges");
+  expect_segments_of_the_model(small, on_small, small_lights, points, segments,
+                               HL::parameters::level_range(std::make_pair(5, 4)),
+                               "bunny, no light");
+  EXPECT_TRUE(segments.empty());
 }
 
 #ifdef CGAL_LINKED_WITH_TBB
