@@ -872,7 +872,8 @@ struct Dented_hood_pair
   }
 };
 
-// The opt-in local residual gives the same regions on a Polyhedron_3 as on a Surface_mesh.
+// The opt-in local residual gives the same regions on a Polyhedron_3 as on a Surface_mesh, at
+// one scale and at two (number_of_scales).
 TEST(LocalResidual, ActsAlikeOnPolyhedronAndSurfaceMesh)
 {
   const Dented_hood_pair pair;
@@ -880,19 +881,21 @@ TEST(LocalResidual, ActsAlikeOnPolyhedronAndSurfaceMesh)
   const HB::Mesh& mesh = pair.mesh;
   const test::Polyhedron& polyhedron = pair.polyhedron;
   const auto lights = HL::default_light_setup(mesh, HLP::number_of_lines(30));
-  std::vector<HB::Irregularity> a;
-  std::vector<HL::Highlight_line_irregularity<test::Polyhedron>> b;
-  CGAL::detect_highlight_line_irregularities(mesh, lights, std::back_inserter(a),
-                                             HLP::local_residual(true));
-  CGAL::detect_highlight_line_irregularities(polyhedron, lights, std::back_inserter(b),
-                                             HLP::local_residual(true));
-  ASSERT_GE(a.size(), 1u);
-  ASSERT_EQ(b.size(), a.size());
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    EXPECT_EQ(b[i].faces.size(), a[i].faces.size());
-    EXPECT_EQ(b[i].kind, a[i].kind);
-    EXPECT_NEAR(b[i].score, a[i].score, 1e-9 * a[i].score);
-    EXPECT_NEAR(b[i].confidence, a[i].confidence, 1e-12);
+  for (int scales : {1, 2}) {
+    SCOPED_TRACE("number_of_scales " + std::to_string(scales));
+    const auto np = HLP::local_residual(HLP::number_of_scales(scales), true);
+    std::vector<HB::Irregularity> a;
+    std::vector<HL::Highlight_line_irregularity<test::Polyhedron>> b;
+    CGAL::detect_highlight_line_irregularities(mesh, lights, std::back_inserter(a), np);
+    CGAL::detect_highlight_line_irregularities(polyhedron, lights, std::back_inserter(b), np);
+    ASSERT_GE(a.size(), 1u);
+    ASSERT_EQ(b.size(), a.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      EXPECT_EQ(b[i].faces.size(), a[i].faces.size());
+      EXPECT_EQ(b[i].kind, a[i].kind);
+      EXPECT_NEAR(b[i].score, a[i].score, 1e-9 * a[i].score);
+      EXPECT_NEAR(b[i].confidence, a[i].confidence, 1e-12);
+    }
   }
 }
 
