@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -285,6 +286,43 @@ TEST(Sweeper, SegmentsAreThoseOfTheModelsLines)
                                HL::parameters::level_range(std::make_pair(5, 4)),
                                "bunny, no light");
   EXPECT_TRUE(segments.empty());
+}
+
+// The same on Polyhedron_3 (handles, not indices), with 32-bit indices into reused arrays.
+TEST(Sweeper, SegmentsAreThoseOfTheModelsLinesOnAPolyhedron)
+{
+  auto bump = [](double x, double y) {
+    const double r2 = (x - 1) * (x - 1) + (y - 1) * (y - 1);
+    return r2 < 9 ? 0.5 * std::pow(1 - r2 / 9, 3) : 0.1 * x;
+  };
+  const Polyhedron polyhedron = to_mesh<Polyhedron>(grid(60, 0.125, -3.75, -3.75, bump, 0.2, 3));
+  const HL::Highlight_line_sweeper<Polyhedron> sweeper(polyhedron);
+  const Lights lights(Point(0.1, 0, 2), Vector(0, 1, 0), Vector(0.05, 0, 1), 0.1);
+  std::vector<Point> points;
+  std::vector<std::array<std::uint32_t, 2>> segments;
+  for (int step = 0; step < 3; ++step) {
+    SCOPED_TRACE("sweep step " + std::to_string(step));
+    const Lights moved = lights.translated(lights.index_direction() * (0.03 * step));
+    const auto model = sweeper.compute(moved);
+    sweeper.compute_segments(moved, points, segments);
+    std::vector<Segment_bits> expected, got;
+    for (const auto& line : model.lines()) {
+      const std::size_t n = line.nodes.size();
+      for (std::size_t i = 0; i + 1 < n + (line.is_closed ? 1 : 0); ++i)
+        expected.push_back(segment_bits(model.nodes()[line.nodes[i]].point,
+                                        model.nodes()[line.nodes[(i + 1) % n]].point));
+    }
+    for (const auto& segment : segments) {
+      ASSERT_LT(segment[0], points.size());
+      ASSERT_LT(segment[1], points.size());
+      got.push_back(segment_bits(points[segment[0]], points[segment[1]]));
+    }
+    EXPECT_GT(got.size(), 100u);
+    std::sort(expected.begin(), expected.end());
+    std::sort(got.begin(), got.end());
+    EXPECT_TRUE(expected == got) << got.size() << " segments, the model's lines have "
+                                 << expected.size();
+  }
 }
 
 #ifdef CGAL_LINKED_WITH_TBB
