@@ -204,6 +204,21 @@ Segment_bits segment_bits(const Point& p, const Point& q)
   return {first[0], first[1], first[2], second[0], second[1], second[2]};
 }
 
+// The segments between consecutive nodes of a model's lines (closing ones included), sorted.
+template <typename Model>
+std::vector<Segment_bits> sorted_segments_of_lines(const Model& model)
+{
+  std::vector<Segment_bits> segments;
+  for (const auto& line : model.lines()) {
+    const std::size_t n = line.nodes.size();
+    for (std::size_t i = 0; i + 1 < n + (line.is_closed ? 1 : 0); ++i)
+      segments.push_back(segment_bits(model.nodes()[line.nodes[i]].point,
+                                      model.nodes()[line.nodes[(i + 1) % n]].point));
+  }
+  std::sort(segments.begin(), segments.end());
+  return segments;
+}
+
 template <typename Sweeper, typename NamedParameters>
 void expect_segments_of_the_model(const Surface_mesh& mesh, const Sweeper& sweeper,
                                   const Lights& lights, std::vector<Point>& points,
@@ -212,20 +227,14 @@ void expect_segments_of_the_model(const Surface_mesh& mesh, const Sweeper& sweep
 {
   const typename Sweeper::Model model = sweeper.compute(lights, np);
   sweeper.compute_segments(lights, points, segments, np);
-  std::vector<Segment_bits> expected, got;
-  for (const auto& line : model.lines()) {
-    const std::size_t n = line.nodes.size();
-    for (std::size_t i = 0; i + 1 < n + (line.is_closed ? 1 : 0); ++i)
-      expected.push_back(segment_bits(model.nodes()[line.nodes[i]].point,
-                                      model.nodes()[line.nodes[(i + 1) % n]].point));
-  }
+  const std::vector<Segment_bits> expected = sorted_segments_of_lines(model);
+  std::vector<Segment_bits> got;
   for (const auto& segment : segments) {
     ASSERT_LT(segment[0], points.size()) << what;
     ASSERT_LT(segment[1], points.size()) << what;
     got.push_back(segment_bits(points[segment[0]], points[segment[1]]));
   }
   EXPECT_EQ(got.size(), model.number_of_segments()) << what;
-  std::sort(expected.begin(), expected.end());
   std::sort(got.begin(), got.end());
   auto same_bits = [](const std::vector<Segment_bits>& a, const std::vector<Segment_bits>& b) {
     return a.size() == b.size() &&
@@ -305,20 +314,14 @@ TEST(Sweeper, SegmentsAreThoseOfTheModelsLinesOnAPolyhedron)
     const Lights moved = lights.translated(lights.index_direction() * (0.03 * step));
     const auto model = sweeper.compute(moved);
     sweeper.compute_segments(moved, points, segments);
-    std::vector<Segment_bits> expected, got;
-    for (const auto& line : model.lines()) {
-      const std::size_t n = line.nodes.size();
-      for (std::size_t i = 0; i + 1 < n + (line.is_closed ? 1 : 0); ++i)
-        expected.push_back(segment_bits(model.nodes()[line.nodes[i]].point,
-                                        model.nodes()[line.nodes[(i + 1) % n]].point));
-    }
+    const std::vector<Segment_bits> expected = sorted_segments_of_lines(model);
+    std::vector<Segment_bits> got;
     for (const auto& segment : segments) {
       ASSERT_LT(segment[0], points.size());
       ASSERT_LT(segment[1], points.size());
       got.push_back(segment_bits(points[segment[0]], points[segment[1]]));
     }
     EXPECT_GT(got.size(), 100u);
-    std::sort(expected.begin(), expected.end());
     std::sort(got.begin(), got.end());
     EXPECT_TRUE(expected == got) << got.size() << " segments, the model's lines have "
                                  << expected.size();
