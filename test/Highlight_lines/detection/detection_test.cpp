@@ -628,6 +628,43 @@ TEST(LocalResidual, TheDemoRoofDentComesFirstAndTheDesignIsLeftAlone)
     EXPECT_LT(found[i].confidence, 0.01) << HB::describe(found[i]);
 }
 
+bool read_shared_mesh(const std::string& name, HB::Mesh& mesh)
+{
+  std::ifstream in(test::shared_data(name));
+  return in && CGAL::IO::read_OFF(in, mesh);
+}
+
+// Dents and bumps 0.2 ē high and 5 ē wide injected into `original` (seeds 1-2, up to 4 each),
+// found by the local residual: how many were injected, how many lie in a region that ranks
+// above every region of the undented mesh, and in how many the region passes the level at
+// which the automatic mode fairs (confidence 0.5).
+struct Ranking
+{
+  std::size_t defects = 0, above = 0, confident = 0;
+};
+
+Ranking rank_injected_defects(const HB::Mesh& original)
+{
+  const auto own = detect_local_residual(original, true);
+  Ranking ranking;
+  for (unsigned seed = 1; seed <= 2; ++seed) {
+    HB::Mesh mesh = original;
+    const auto injected = HB::inject_defects(mesh, 4, 5.0, 0.2, seed, [](auto) { return true; });
+    const auto found = detect_local_residual(mesh, true);
+    ranking.defects += injected.size();
+    for (std::size_t r : HB::regions_of_defects(mesh, injected, found)) {
+      if (r == std::size_t(-1))
+        continue;
+      bool first = true;
+      for (const auto& o : own)
+        first = first && HB::stronger(found[r], o);
+      ranking.above += first;
+      ranking.confident += found[r].confidence >= 0.5;
+    }
+  }
+  return ranking;
+}
+
 // On the shared Beetle, dents and bumps 0.2 ē high (seeds 1-2, 2 x 4): each one found ranks
 // above every region of the undented Beetle (measured: 6 of 8, the two others are not found;
 // 0 of 8 before the symmetry rule, when a round design bump on the midplane had confidence 1),
@@ -637,30 +674,12 @@ TEST(LocalResidual, TheDemoRoofDentComesFirstAndTheDesignIsLeftAlone)
 TEST(LocalResidual, RanksDefectsAboveTheDesignOfASymmetricShape)
 {
   HB::Mesh original;
-  std::ifstream in(test::shared_data("beetle.off"));
-  if (!in || !CGAL::IO::read_OFF(in, original))
+  if (!read_shared_mesh("beetle.off", original))
     GTEST_SKIP() << "shared mesh beetle.off not found";
-  const auto own = detect_local_residual(original, true);
-  std::size_t above = 0, defects = 0, confident = 0;
-  for (unsigned seed = 1; seed <= 2; ++seed) {
-    HB::Mesh mesh = original;
-    const auto injected = HB::inject_defects(mesh, 4, 5.0, 0.2, seed, [](auto) { return true; });
-    const auto found = detect_local_residual(mesh, true);
-    const auto holds_defect = HB::regions_of_defects(mesh, injected, found);
-    defects += injected.size();
-    for (std::size_t r : holds_defect) {
-      if (r == std::size_t(-1))
-        continue;
-      bool first = true;
-      for (const auto& o : own)
-        first = first && HB::stronger(found[r], o);
-      above += first;
-      confident += found[r].confidence >= 0.5;
-    }
-  }
-  EXPECT_EQ(defects, 8u);
-  EXPECT_GE(above, 6u);
-  EXPECT_GE(confident, 3u);
+  const Ranking r = rank_injected_defects(original);
+  EXPECT_EQ(r.defects, 8u);
+  EXPECT_GE(r.above, 6u);
+  EXPECT_GE(r.confident, 3u);
 }
 
 // On a scan without a mirror symmetry (the shared bunny, 0.2 ē, seeds 1-2, 2 x 3 defects: the
@@ -671,27 +690,11 @@ TEST(LocalResidual, RanksDefectsAboveTheDesignOfASymmetricShape)
 TEST(LocalResidual, RanksDefectsByTheirContrastWithTheSurroundings)
 {
   HB::Mesh original;
-  std::ifstream in(test::shared_data("bunny.off"));
-  if (!in || !CGAL::IO::read_OFF(in, original))
+  if (!read_shared_mesh("bunny.off", original))
     GTEST_SKIP() << "shared mesh bunny.off not found";
-  const auto own = detect_local_residual(original, true);
-  std::size_t above = 0, defects = 0;
-  for (unsigned seed = 1; seed <= 2; ++seed) {
-    HB::Mesh mesh = original;
-    const auto injected = HB::inject_defects(mesh, 4, 5.0, 0.2, seed, [](auto) { return true; });
-    const auto found = detect_local_residual(mesh, true);
-    defects += injected.size();
-    for (std::size_t r : HB::regions_of_defects(mesh, injected, found)) {
-      if (r == std::size_t(-1))
-        continue;
-      bool first = true;
-      for (const auto& o : own)
-        first = first && HB::stronger(found[r], o);
-      above += first;
-    }
-  }
-  EXPECT_EQ(defects, 6u);
-  EXPECT_GE(above, 2u);
+  const Ranking r = rank_injected_defects(original);
+  EXPECT_EQ(r.defects, 6u);
+  EXPECT_GE(r.above, 2u);
 }
 
 // A region must show in half of the setups that can see its centre: those that face it and
@@ -701,8 +704,7 @@ TEST(LocalResidual, RanksDefectsByTheirContrastWithTheSurroundings)
 TEST(LocalResidual, CountsTheEvidenceAmongTheSetupsThatScoreTheSurface)
 {
   HB::Mesh original;
-  std::ifstream in(test::shared_data("spot.off"));
-  if (!in || !CGAL::IO::read_OFF(in, original))
+  if (!read_shared_mesh("spot.off", original))
     GTEST_SKIP() << "shared mesh spot.off not found";
   std::size_t located = 0, defects = 0;
   for (unsigned seed = 1; seed <= 2; ++seed) {
