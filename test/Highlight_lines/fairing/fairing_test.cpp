@@ -649,7 +649,8 @@ TEST(TransactionalFairing, KeepCompletedIterationsLeavesTheLastCompletedState)
   try {
     CGAL::fair_with_highlight_lines(
         mesh, region, hood_lights,
-        HLP::combine(HLP::qp_solver(std::ref(solver)), HLP::keep_completed_iterations(true)));
+        HLP::combine(HLP::qp_solver(std::ref(solver)), HLP::keep_completed_iterations(true),
+                     HLP::convergence_threshold(1e-9))); // not converged after 2 steps
     ADD_FAILURE() << "no exception";
   } catch (const HL::Fairing_failure& e) {
     EXPECT_EQ(e.report().iterations, 2u);
@@ -683,8 +684,10 @@ TEST(TransactionalFairing, PointMapFailureRestoresTheMesh)
   const std::vector<Point> before = points_of(mesh);
   const auto region = disk_region(mesh, 1.5 * d.radius);
   Throwing_point_map vpm{&mesh, std::make_shared<int>(150)}; // fails during the 2nd or 3rd step
+  // A threshold the fairing cannot meet in 2 steps, so that it reaches the failing write.
   EXPECT_THROW(CGAL::fair_with_highlight_lines(mesh, region, hood_lights,
-                                               CGAL::parameters::vertex_point_map(vpm)),
+                                               HLP::combine(CGAL::parameters::vertex_point_map(vpm),
+                                                            HLP::convergence_threshold(1e-9))),
                std::runtime_error);
   *vpm.writes_left = 1 << 30;
   EXPECT_EQ(points_of(mesh), before);

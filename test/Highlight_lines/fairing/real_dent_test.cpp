@@ -245,9 +245,10 @@ INSTANTIATE_TEST_SUITE_P(RealDent, RealDentTest,
                          });
 
 // The fairing also stops when all the steps still to come, estimated from the geometric tail of
-// the last three, would together move no vertex by ε ē (on real dents the steps shrink by a
-// factor of 0.05 to 0.15 per iteration): it then ends within ε ē of where going on to steps of
-// a ten-thousandth of that ends, in fewer iterations.
+// the last three, or of the last two where both were the programs' own minimisers, would
+// together move no vertex by ε ē (on real dents the steps shrink by a factor of 0.002 to 0.3
+// per iteration): it then ends within ε ē of where going on to steps of a ten-thousandth of
+// that ends, in fewer iterations. Both depths: a 0.3 ē dent is often faired in two steps.
 TEST(RealDentTail, StoppingOnTheGeometricTailEndsWithinEpsilonOfTheLimit)
 {
   const double epsilon = 1e-3;
@@ -258,29 +259,30 @@ TEST(RealDentTail, StoppingOnTheGeometricTailEndsWithinEpsilonOfTheLimit)
     if (!std::ifstream(path) || !CGAL::IO::read_polygon_mesh(path, mesh))
       continue;
     HB::Real_dent_options options;
-    options.max_centres = 1;
-    const HB::Real_dent_case c = HB::make_real_dent_cases(mesh, stem, seed, options).front();
-    SCOPED_TRACE(c.name);
-    Mesh stopped = c.input, limit = c.input;
-    const auto report = CGAL::fair_with_highlight_lines(stopped, c.region, c.lights,
-                                                        HLP::convergence_threshold(epsilon));
-    const auto on_to_the_limit = CGAL::fair_with_highlight_lines(
-        limit, c.region, c.lights, HLP::convergence_threshold(1e-4 * epsilon));
-    ASSERT_TRUE(report.converged()) << describe(report);
-    ASSERT_TRUE(on_to_the_limit.converged()) << describe(on_to_the_limit);
-    EXPECT_LT(report.iterations, on_to_the_limit.iterations);
-    ++cases;
-    if (report.history[report.iterations - 1].relative_max_displacement >= epsilon)
-      ++stopped_on_the_tail;
-    double farthest = 0;
-    for (Mesh::Vertex_index v : mesh.vertices())
-      farthest =
-          (std::max)(farthest, std::sqrt(CGAL::squared_distance(stopped.point(v), limit.point(v))));
-    EXPECT_LE(farthest, epsilon * c.mean_edge_length) << describe(report);
+    options.max_centres = 2;
+    for (const HB::Real_dent_case& c : HB::make_real_dent_cases(mesh, stem, seed, options)) {
+      SCOPED_TRACE(c.name);
+      Mesh stopped = c.input, limit = c.input;
+      const auto report = CGAL::fair_with_highlight_lines(stopped, c.region, c.lights,
+                                                          HLP::convergence_threshold(epsilon));
+      const auto on_to_the_limit = CGAL::fair_with_highlight_lines(
+          limit, c.region, c.lights, HLP::convergence_threshold(1e-4 * epsilon));
+      ASSERT_TRUE(report.converged()) << describe(report);
+      ASSERT_TRUE(on_to_the_limit.converged()) << describe(on_to_the_limit);
+      EXPECT_LT(report.iterations, on_to_the_limit.iterations);
+      ++cases;
+      if (report.history[report.iterations - 1].relative_max_displacement >= epsilon)
+        ++stopped_on_the_tail;
+      double farthest = 0;
+      for (Mesh::Vertex_index v : mesh.vertices())
+        farthest = (std::max)(farthest,
+                              std::sqrt(CGAL::squared_distance(stopped.point(v), limit.point(v))));
+      EXPECT_LE(farthest, epsilon * c.mean_edge_length) << describe(report);
+    }
   }
   if (cases == 0)
     GTEST_SKIP() << "no mesh of " << HIGHLIGHT_LINES_SHARED_DATA_DIR;
-  EXPECT_GE(2 * stopped_on_the_tail, cases); // measured: 4 of 6
+  EXPECT_GE(2 * stopped_on_the_tail, cases); // measured: 16 of 22
 }
 
 } // namespace

@@ -103,6 +103,7 @@ public:
     make_targets(report);
     start_step_control();
     std::size_t blocked_in_a_row = 0;
+    free_steps_.clear();
     for (std::size_t iteration = 0;; ++iteration) {
       take_checkpoint();
       Fairing_report::Iteration step;
@@ -613,6 +614,12 @@ private:
     }
     applied_ = x;
     previous_step_ = x;
+    // Free: the program's own minimiser, no vertex held against a flip or at its trust radius.
+    bool free = step.step_scale == 1 && step.restrained_vertices == 0 &&
+                step.solver.status == Box_QP_status::OPTIMAL;
+    for (std::size_t i = 0; i < n && free; ++i)
+      free = std::abs(x[i]) < 0.99 * radius_[i];
+    free_steps_.push_back(free);
     step.max_displacement = max_abs(x);
     step.relative_max_displacement = step.max_displacement / mean_edge_length_;
     // Blocked: the program wanted a move that counts, and no vertex could take any of it.
@@ -637,6 +644,8 @@ private:
       return true;
     const std::size_t k = history.size();
     if (k >= 3 && remaining_steps_estimate(history) < options_.convergence_threshold)
+      return true;
+    if (k >= 2 && free_tail_estimate(history) < options_.convergence_threshold)
       return true;
     if (k < 4)
       return false;
@@ -665,6 +674,23 @@ private:
                  second = history[k - 2].relative_max_displacement,
                  last = history[k - 1].relative_max_displacement;
     const double rate = (std::max)(last / second, second / first);
+    return rate < 0.5 ? last * rate / (1 - rate) : std::numeric_limits<double>::infinity();
+  }
+
+  // The same tail after two free steps (see take_step()), with ρ twice their ratio: the
+  // second is then the first's correction for the nonlinearity, contracted at about the same
+  // rate as every later one (the next ratio is 0.5 to 2 times this one on real dents). A step
+  // at its trust radius or held against a flip says nothing of ρ (the larger ratio of
+  // remaining_steps_estimate() covers those), so both must be free. It ends the many
+  // fairings whose last iteration would only confirm a step of ~10^-5 ē.
+  double free_tail_estimate(const std::vector<Fairing_report::Iteration>& history) const
+  {
+    const std::size_t k = history.size();
+    if (free_steps_.size() != k || !free_steps_[k - 2] || !free_steps_[k - 1] ||
+        !(history[k - 2].relative_max_displacement > 0))
+      return std::numeric_limits<double>::infinity();
+    const double last = history[k - 1].relative_max_displacement;
+    const double rate = 2 * last / history[k - 2].relative_max_displacement;
     return rate < 0.5 ? last * rate / (1 - rate) : std::numeric_limits<double>::infinity();
   }
 
@@ -729,6 +755,7 @@ private:
   bool blocked_ = false;         // the last step could move no vertex
   std::vector<char> restrained_; // held back against a flip in the last step
   std::vector<double> applied_;  // the last step taken
+  std::vector<char> free_steps_; // per step taken: the program's minimiser, see take_step()
   double predicted_decrease_ = std::numeric_limits<double>::quiet_NaN();
   double previous_value_ = std::numeric_limits<double>::quiet_NaN();
   double best_value_ = std::numeric_limits<double>::infinity();
