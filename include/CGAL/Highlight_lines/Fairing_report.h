@@ -56,6 +56,11 @@ struct Fairing_report
     /// 1 when the step taken is the solution of a program; otherwise the smallest fraction of
     /// its displacement a vertex was given, where moving it further would have flipped a face.
     double step_scale = 1;
+    /// 1 when the step taken is the solution of a program; above 1 where that solution
+    /// continued the geometric tail of the last steps (the slowest mode of a fairing whose steps
+    /// shrink slowly) and was stretched by this factor towards its limit, within the trust
+    /// region.
+    double extrapolation = 1;
     /// Movable vertices held back because the program's solution would have flipped a face
     /// around them (a face whose normal turns by more than 90° from its input normal): their
     /// bounds were tightened and the program solved again, or their displacement was scaled

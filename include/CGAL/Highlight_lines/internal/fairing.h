@@ -104,6 +104,7 @@ public:
     start_step_control();
     std::size_t blocked_in_a_row = 0;
     free_steps_.clear();
+    last_program_step_.clear();
     for (std::size_t iteration = 0;; ++iteration) {
       take_checkpoint();
       Fairing_report::Iteration step;
@@ -118,6 +119,7 @@ public:
       }
       set_step_bounds();
       std::vector<double> x = solve_program(step, iteration, report);
+      extrapolate_tail(x, step);
       take_step(x, directions, step);
       report.history.push_back(step);
       sweeper_.update_positions();
@@ -466,6 +468,7 @@ private:
   {
     const double actual = previous_value_ - value;
     const double rho = actual / predicted_decrease_;
+    value_before_last_step_ = previous_value_;
     previous_value_ = value;
     for (std::size_t i = 0; i < hold_.size(); ++i)
       if (!restrained_[i])
@@ -475,6 +478,9 @@ private:
     if (!(predicted_decrease_ > 0) || !std::isfinite(rho)) {
       if (actual < 0)
         trust_factor_ = (std::max)(0.5 * trust_factor_, 1.0 / 1024);
+      // An extrapolation the trust region cut short that lowered F: the tail reaches further.
+      else if (actual > 0 && extrapolation_cut_)
+        trust_factor_ = (std::min)(2 * trust_factor_, 64.0);
       return;
     }
     bool bound_used = false;
@@ -533,6 +539,55 @@ private:
     for (double v : x)
       m = (std::max)(m, std::abs(v));
     return m;
+  }
+
+  // The slow tail. With the weights frozen at each iterate, the iteration is a fixed-point
+  // iteration whose steps shrink by a factor ρ per iteration once the trust region no longer
+  // binds; on fine meshes with deep dents ρ approaches 1 (0.64 at 2.4·10^4 movable vertices,
+  // 0.99 at 10^5: hundreds of iterations). There the steps are one mode, each ρ times the one
+  // before, and all of them together move the mesh by s / (1 - ρ) from where the step s starts
+  // (Aitken's extrapolation of a linear sequence). When the program's solution x and the last
+  // solution taken as solved are both inside the trust region, point the same way (cosine
+  // above 0.95) and shrink slowly (0.5 <= ρ < 1, ρ = x·x' / |x'|², faster tails end by the
+  // convergence tests), and the last step lowered F, x is stretched towards that limit, as far
+  // as the trust region allows. The next step corrects what the extrapolation missed; it is
+  // not free (convergence tests skip it), and a rise of F shrinks the trust region as usual.
+  void extrapolate_tail(std::vector<double>& x, Fairing_report::Iteration& step)
+  {
+    extrapolation_cut_ = false;
+    std::vector<double> previous;
+    previous.swap(last_program_step_);
+    const std::size_t n = x.size();
+    bool inside = step.solver.status == Box_QP_status::OPTIMAL;
+    for (std::size_t i = 0; i < n && inside; ++i)
+      inside = std::abs(x[i]) < 0.99 * radius_[i];
+    if (!inside)
+      return;
+    last_program_step_ = x;
+    if (previous.size() != n || !(previous_value_ < value_before_last_step_))
+      return;
+    double xp = 0, pp = 0, xx = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      xp += x[i] * previous[i];
+      pp += previous[i] * previous[i];
+      xx += x[i] * x[i];
+    }
+    if (!(pp > 0 && xx > 0) || xp < 0.95 * std::sqrt(xx * pp))
+      return;
+    const double rho = xp / pp;
+    if (!(rho >= 0.5 && rho < 1))
+      return;
+    const double limit = 1 / (1 - rho);
+    double factor = limit;
+    for (std::size_t i = 0; i < n; ++i)
+      if (x[i] != 0)
+        factor = (std::min)(factor, radius_[i] / std::abs(x[i]));
+    extrapolation_cut_ = factor < limit;
+    if (!(factor > 1))
+      return;
+    for (double& v : x)
+      v *= factor;
+    step.extrapolation = factor;
   }
 
   // Moves the movable vertices by x_i N_i without flipping a face (flip_guard.h). Where the
@@ -615,7 +670,7 @@ private:
     applied_ = x;
     previous_step_ = x;
     // Free: the program's own minimiser, no vertex held against a flip or at its trust radius.
-    bool free = step.step_scale == 1 && step.restrained_vertices == 0 &&
+    bool free = step.step_scale == 1 && step.restrained_vertices == 0 && step.extrapolation == 1 &&
                 step.solver.status == Box_QP_status::OPTIMAL;
     for (std::size_t i = 0; i < n && free; ++i)
       free = std::abs(x[i]) < 0.99 * radius_[i];
@@ -626,8 +681,9 @@ private:
     blocked_ =
         step.max_displacement == 0 && wanted / mean_edge_length_ >= options_.convergence_threshold;
     // The program predicts the decrease of F for its own solution: not for a scaled one.
-    predicted_decrease_ = step.step_scale == 1 ? step.target_value - step.solver.objective_value
-                                               : std::numeric_limits<double>::quiet_NaN();
+    predicted_decrease_ = step.step_scale == 1 && step.extrapolation == 1
+                              ? step.target_value - step.solver.objective_value
+                              : std::numeric_limits<double>::quiet_NaN();
   }
 
   // Eq. 17 on the step taken. A vertex held back against a flip counts with the displacement
@@ -668,7 +724,7 @@ private:
     const std::size_t k = history.size();
     for (std::size_t i = k - 3; i < k; ++i)
       if (history[i].step_scale != 1 || history[i].restrained_vertices != 0 ||
-          !(history[i].relative_max_displacement > 0))
+          history[i].extrapolation != 1 || !(history[i].relative_max_displacement > 0))
         return std::numeric_limits<double>::infinity();
     const double first = history[k - 3].relative_max_displacement,
                  second = history[k - 2].relative_max_displacement,
@@ -756,6 +812,9 @@ private:
   std::vector<char> restrained_; // held back against a flip in the last step
   std::vector<double> applied_;  // the last step taken
   std::vector<char> free_steps_; // per step taken: the program's minimiser, see take_step()
+  std::vector<double> last_program_step_; // the last solution inside the trust region, as solved
+  double value_before_last_step_ = std::numeric_limits<double>::quiet_NaN(); // F
+  bool extrapolation_cut_ = false; // the last step's extrapolation stopped at the trust region
   double predicted_decrease_ = std::numeric_limits<double>::quiet_NaN();
   double previous_value_ = std::numeric_limits<double>::quiet_NaN();
   double best_value_ = std::numeric_limits<double>::infinity();
