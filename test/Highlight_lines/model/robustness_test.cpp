@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <limits>
 
@@ -258,6 +259,50 @@ TEST(ExactClassification, FollowsExactValuesWhereDoubleNormalsAreWrong)
     EXPECT_TRUE(Q(double(level.level)) <= ratio && ratio < Q(double(level.level + 1)))
         << "vertex " << v << ": level " << level.level << ", exact d/s " << CGAL::to_double(ratio);
     EXPECT_EQ(level.on_level, ratio == Q(double(level.level)));
+  }
+}
+
+// The classification pass takes the common case several vertices at a time (two lanes, or
+// four with AVX2 where the processor has them) and the other vertices one at a time; every
+// class must be the one Level_classifier::classify() gives that vertex alone, to the bit.
+// Lights through a vertex of an integer grid, along the axes, with a power-of-two spacing:
+// many vertices lie exactly on a level, so that lanes of common and general cases mix.
+TEST(ExactClassification, VectorPassesEqualOneVertexAtATime)
+{
+  auto wavy = [](double x, double y) { return std::floor(3 * std::sin(x) + 2 * std::cos(y)); };
+  std::vector<Surface_mesh> meshes;
+  meshes.push_back(to_mesh<Surface_mesh>(grid(37, 1.0, -18, -18, wavy)));
+  meshes.push_back(to_mesh<Surface_mesh>(sphere(3.0, 4)));
+  for (const Surface_mesh& m : meshes) {
+    CGAL::Highlight_lines::Highlight_line_sweeper<Surface_mesh> sweeper(m);
+    const Point corner = m.point(*vertices(m).begin());
+    const std::vector<Lights> all_lights = {
+        Lights(corner, Vector(1, 0, 0), Vector(0, 0, 1), 0.25),
+        Lights(corner, Vector(0, 1, 0), Vector(1, 0, 1), 0.5),
+        Lights(Point(0.1, 0.2, 5), Vector(1, 0.3, 0), Vector(0.3, -1, 5), 0.37)};
+    for (const Lights& lights : all_lights)
+      for (bool facing_side_only : {false, true}) {
+        std::vector<CGAL::Highlight_lines::internal::Vertex_level> levels;
+        sweeper.classify(lights, levels, facing_side_only);
+        const auto classifier = sweeper.classifier(lights);
+        CGAL::Highlight_lines::internal::Classification_statistics stats;
+        ASSERT_EQ(levels.size(), sweeper.local_mesh().number_of_model_vertices);
+        std::size_t on_level = 0;
+        for (std::size_t v = 0; v < levels.size(); ++v) {
+          const auto alone = classifier.classify(int(v), stats, facing_side_only);
+          const auto& l = levels[v];
+          on_level += l.on_level;
+          ASSERT_EQ(l.level, alone.level) << "vertex " << v;
+          ASSERT_EQ(l.normal_side, alone.normal_side) << "vertex " << v;
+          ASSERT_EQ(l.on_level, alone.on_level) << "vertex " << v;
+          ASSERT_EQ(l.out_of_range, alone.out_of_range) << "vertex " << v;
+          ASSERT_EQ(l.turned_away, alone.turned_away) << "vertex " << v;
+          ASSERT_EQ(std::memcmp(&l.distance, &alone.distance, sizeof(double)), 0) << "vertex " << v;
+        }
+        if (&lights == &all_lights[0] && &m == &meshes[0]) {
+          EXPECT_GT(on_level, std::size_t(10)); // the general case is exercised
+        }
+      }
   }
 }
 

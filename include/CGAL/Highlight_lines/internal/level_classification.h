@@ -21,16 +21,41 @@
 #include <vector>
 
 // The common case of the classification two vertices at a time (see
-// Level_classifier::classify_common_case_pair()) where GCC's vector extensions map to SSE2;
+// Level_classifier::classify_common_case_lanes()) where GCC's vector extensions map to SSE2;
 // elsewhere one vertex at a time, with the same results.
 #if defined(__GNUC__) && !defined(__clang__) && defined(__SSE2__) &&                               \
     !defined(CGAL_HIGHLIGHT_LINES_NO_TWO_LANES)
 #define CGAL_HIGHLIGHT_LINES_TWO_LANES
 #endif
+// On x86-64, four vertices at a time in AVX2 vectors when the processor has them (decided at
+// run time, see classify_four_at_a_time()), with the same results.
+#if defined(CGAL_HIGHLIGHT_LINES_TWO_LANES) && defined(__x86_64__) &&                              \
+    !defined(CGAL_HIGHLIGHT_LINES_NO_FOUR_LANES)
+#define CGAL_HIGHLIGHT_LINES_FOUR_LANES
+#endif
 
 namespace CGAL {
 namespace Highlight_lines {
 namespace internal {
+
+#ifdef CGAL_HIGHLIGHT_LINES_TWO_LANES
+// The vectors of Level_classifier::classify_common_case_lanes() (GCC does not apply
+// vector_size to a size that depends on a template parameter).
+template <int Lanes_count>
+struct Lane_vectors;
+template <>
+struct Lane_vectors<2>
+{
+  typedef double Lanes __attribute__((vector_size(16)));
+  typedef long long Masks __attribute__((vector_size(16)));
+};
+template <>
+struct Lane_vectors<4>
+{
+  typedef double Lanes __attribute__((vector_size(32)));
+  typedef long long Masks __attribute__((vector_size(32)));
+};
+#endif
 
 // Where the highlight distance value d of a vertex (eq. 1) lies among the levels m·s.
 // Decided once per vertex and cached: edges and faces read these classes, so all elements
@@ -190,59 +215,96 @@ public:
   }
 
 #ifdef CGAL_HIGHLIGHT_LINES_TWO_LANES
-  // classify_common_case() for vertices v and v + 1 at once, in the two lanes of SSE2 vectors:
-  // the same operations on the same doubles, hence the same results, in about half the
-  // instructions (the pass is bound by them). floor(q) is taken as r - (r > q) with r = q
-  // rounded to an integer by adding and subtracting 1.5 * 2^52 (exact for |q| <= 2^49, in any
-  // rounding mode r is floor(q) or ceil(q)). Bit i of the result: lane i is a common case.
-  BOOST_FORCEINLINE unsigned classify_common_case_pair(std::size_t v, bool facing_side_only,
-                                                       Common_case result[2]) const
+  // classify_common_case() for the Lanes vertices v, v + 1, ... at once, in the lanes of
+  // vectors (two: SSE2; four: AVX2, see classify_vertices()): the same operations on the same
+  // doubles, hence the same results, in about 1 / Lanes of the instructions (the pass is bound
+  // by them). floor(q) is taken as r - (r > q) with r = q rounded to an integer by adding and
+  // subtracting 1.5 * 2^52 (exact for |q| <= 2^49, in any rounding mode r is floor(q) or
+  // ceil(q)). Bit i of the result: lane i is a common case. No multiply-add is contracted: the
+  // AVX2 caller does not enable FMA.
+  template <int Lanes_count>
+  BOOST_FORCEINLINE unsigned classify_common_case_lanes(std::size_t v, bool facing_side_only,
+                                                        Common_case result[Lanes_count]) const
   {
-    typedef double Lanes __attribute__((vector_size(16)));
-    typedef long long Masks __attribute__((vector_size(16)));
+    typedef typename Lane_vectors<Lanes_count>::Lanes Lanes;
+    typedef typename Lane_vectors<Lanes_count>::Masks Masks;
     const double* n = normals_ + 3 * v;
     const double* p = points_ + 3 * v;
-    const Masks magnitude_bits = {0x7fffffffffffffffLL, 0x7fffffffffffffffLL};
-    auto magnitude = [&](Lanes x) { return Lanes(Masks(x) & magnitude_bits); };
-    auto lanes = [](double x) { return Lanes{x, x}; };
-    const Lanes n0 = {n[0], n[3]}, n1 = {n[1], n[4]}, n2 = {n[2], n[5]};
-    const Lanes p0 = {p[0], p[3]}, p1 = {p[1], p[4]}, p2 = {p[2], p[5]};
-    const Lanes bound_factor = {bounds_[v], bounds_[v + 1]};
-    const Lanes den = lanes(z_[0]) * n0 + lanes(z_[1]) * n1 + lanes(z_[2]) * n2;
-    const Lanes den_bound = bound_factor * lanes(zabs_sum_);
-    const Lanes w0 = p0 - lanes(a_[0]), w1 = p1 - lanes(a_[1]), w2 = p2 - lanes(a_[2]);
-    const Lanes wm0 = magnitude(p0) + lanes(std::abs(a_[0])),
-                wm1 = magnitude(p1) + lanes(std::abs(a_[1])),
-                wm2 = magnitude(p2) + lanes(std::abs(a_[2]));
-    const Lanes x0 = w1 * lanes(h_[2]) - w2 * lanes(h_[1]),
-                x1 = w2 * lanes(h_[0]) - w0 * lanes(h_[2]),
-                x2 = w0 * lanes(h_[1]) - w1 * lanes(h_[0]);
-    const Lanes xm =
-        wm0 * lanes(habs_pair_[0]) + wm1 * lanes(habs_pair_[1]) + wm2 * lanes(habs_pair_[2]);
+    // Broadcasts and loads without helper functions: a function taking or returning an AVX
+    // vector is only safe where AVX is enabled.
+    Lanes n0, n1, n2, p0, p1, p2, bound_factor;
+    Masks magnitude_bits;
+    Lanes z0, z1, z2, a0, a1, a2, aabs0, aabs1, aabs2, h0, h1, h2, hp0, hp1, hp2, zabs_sum,
+        inverse_s, s, zero, one, min_mag, inf, limit, minus_limit, shift;
+    for (int i = 0; i < Lanes_count; ++i) {
+      n0[i] = n[3 * i];
+      n1[i] = n[3 * i + 1];
+      n2[i] = n[3 * i + 2];
+      p0[i] = p[3 * i];
+      p1[i] = p[3 * i + 1];
+      p2[i] = p[3 * i + 2];
+      bound_factor[i] = bounds_[v + std::size_t(i)];
+      magnitude_bits[i] = 0x7fffffffffffffffLL;
+      z0[i] = z_[0];
+      z1[i] = z_[1];
+      z2[i] = z_[2];
+      a0[i] = a_[0];
+      a1[i] = a_[1];
+      a2[i] = a_[2];
+      aabs0[i] = std::abs(a_[0]);
+      aabs1[i] = std::abs(a_[1]);
+      aabs2[i] = std::abs(a_[2]);
+      h0[i] = h_[0];
+      h1[i] = h_[1];
+      h2[i] = h_[2];
+      hp0[i] = habs_pair_[0];
+      hp1[i] = habs_pair_[1];
+      hp2[i] = habs_pair_[2];
+      zabs_sum[i] = zabs_sum_;
+      inverse_s[i] = inverse_s_;
+      s[i] = s_;
+      zero[i] = 0.0;
+      one[i] = 1.0;
+      min_mag[i] = min_magnitude;
+      inf[i] = infinity;
+      limit[i] = guess_limit;
+      minus_limit[i] = -guess_limit;
+      shift[i] = rounding_shift;
+    }
+#define CGAL_HIGHLIGHT_LINES_MAGNITUDE(x) Lanes(Masks(x) & magnitude_bits)
+    const Lanes den = z0 * n0 + z1 * n1 + z2 * n2;
+    const Lanes den_bound = bound_factor * zabs_sum;
+    const Lanes w0 = p0 - a0, w1 = p1 - a1, w2 = p2 - a2;
+    const Lanes wm0 = CGAL_HIGHLIGHT_LINES_MAGNITUDE(p0) + aabs0,
+                wm1 = CGAL_HIGHLIGHT_LINES_MAGNITUDE(p1) + aabs1,
+                wm2 = CGAL_HIGHLIGHT_LINES_MAGNITUDE(p2) + aabs2;
+    const Lanes x0 = w1 * h2 - w2 * h1, x1 = w2 * h0 - w0 * h2, x2 = w0 * h1 - w1 * h0;
+    const Lanes xm = wm0 * hp0 + wm1 * hp1 + wm2 * hp2;
     const Lanes num = x0 * n0 + x1 * n1 + x2 * n2;
     const Lanes num_bound = bound_factor * xm;
-    const Masks side_certain = (magnitude(den) > den_bound) & (den_bound > lanes(min_magnitude));
-    const Masks facing = den > lanes(0.0);
+    const Masks side_certain =
+        (CGAL_HIGHLIGHT_LINES_MAGNITUDE(den) > den_bound) & (den_bound > min_mag);
+    const Masks facing = den > zero;
     const Lanes d = num / den;
-    const Lanes scaled = d * lanes(inverse_s_);
+    const Lanes scaled = d * inverse_s;
     // std::min(guess_limit, x) and std::max(-guess_limit, x), NaN to guess_limit alike.
-    const Lanes below = (scaled < lanes(guess_limit)) ? scaled : lanes(guess_limit);
-    const Lanes q = (lanes(-guess_limit) < below) ? below : lanes(-guess_limit);
-    const Lanes rounded = (q + lanes(rounding_shift)) - lanes(rounding_shift);
-    const Lanes k = rounded - ((rounded > q) ? lanes(1.0) : lanes(0.0));
-    const Lanes ms0 = k * lanes(s_), ms1 = (k + lanes(1.0)) * lanes(s_);
+    const Lanes below = (scaled < limit) ? scaled : limit;
+    const Lanes q = (minus_limit < below) ? below : minus_limit;
+    const Lanes rounded = (q + shift) - shift;
+    const Lanes k = rounded - ((rounded > q) ? one : zero);
+    const Lanes ms0 = k * s, ms1 = (k + one) * s;
     const Lanes e0 = num - ms0 * den, e1 = num - ms1 * den;
-    const Lanes b0 = num_bound + magnitude(ms0) * den_bound,
-                b1 = num_bound + magnitude(ms1) * den_bound;
-    const Masks bracket = (magnitude(e0) > b0) & (magnitude(e1) > b1) &
-                          (b0 > lanes(min_magnitude)) & (b1 > lanes(min_magnitude)) &
-                          (b0 < lanes(infinity)) & (b1 < lanes(infinity)) &
-                          ~((e0 > lanes(0.0)) ^ facing) & ((e1 > lanes(0.0)) ^ facing) &
-                          (magnitude(scaled) < lanes(guess_limit));
-    const Masks turned_away = facing_side_only ? ~facing : Masks{0, 0};
+    const Lanes b0 = num_bound + CGAL_HIGHLIGHT_LINES_MAGNITUDE(ms0) * den_bound,
+                b1 = num_bound + CGAL_HIGHLIGHT_LINES_MAGNITUDE(ms1) * den_bound;
+    const Masks bracket = (CGAL_HIGHLIGHT_LINES_MAGNITUDE(e0) > b0) &
+                          (CGAL_HIGHLIGHT_LINES_MAGNITUDE(e1) > b1) & (b0 > min_mag) &
+                          (b1 > min_mag) & (b0 < inf) & (b1 < inf) & ~((e0 > zero) ^ facing) &
+                          ((e1 > zero) ^ facing) & (CGAL_HIGHLIGHT_LINES_MAGNITUDE(scaled) < limit);
+#undef CGAL_HIGHLIGHT_LINES_MAGNITUDE
+    const Masks turned_away = facing_side_only ? ~facing : (facing & ~facing);
     const Masks common = side_certain & (turned_away | bracket);
     unsigned found = 0;
-    for (int i = 0; i < 2; ++i) {
+    for (int i = 0; i < Lanes_count; ++i) {
       result[i].k = static_cast<long long>(k[i]);
       result[i].d = d[i];
       result[i].facing = facing[i] != 0;
@@ -463,6 +525,54 @@ inline int compare_band_to_level(long long band, long long m)
   return band > 2 * m ? 1 : (band < 2 * m ? -1 : 0);
 }
 
+#ifdef CGAL_HIGHLIGHT_LINES_TWO_LANES
+// Classifies the vertices [v, e) Lanes_count at a time while at least Lanes_count remain
+// (Level_classifier::classify_common_case_lanes(), store(v, common case) for its common cases,
+// in_general(v) for the others); returns the first vertex left.
+template <int Lanes_count, typename Classifier, typename Store, typename InGeneral>
+BOOST_FORCEINLINE std::size_t classify_lanes(const Classifier& classifier, std::size_t v,
+                                             std::size_t e, bool facing_side_only,
+                                             const Store& store, const InGeneral& in_general)
+{
+  for (; v + Lanes_count <= e; v += Lanes_count) {
+    typename Classifier::Common_case common[Lanes_count];
+    const unsigned found =
+        classifier.template classify_common_case_lanes<Lanes_count>(v, facing_side_only, common);
+    if (found == (1u << Lanes_count) - 1) {
+      for (int i = 0; i < Lanes_count; ++i)
+        store(v + std::size_t(i), common[i]);
+      continue;
+    }
+    for (int i = 0; i < Lanes_count; ++i) {
+      if (found & (1u << i))
+        store(v + std::size_t(i), common[i]);
+      else
+        in_general(v + std::size_t(i));
+    }
+  }
+  return v;
+}
+#endif
+
+#ifdef CGAL_HIGHLIGHT_LINES_FOUR_LANES
+// Whether the processor (and the system) supports AVX2.
+inline bool has_four_lanes()
+{
+  static const bool avx2 = __builtin_cpu_supports("avx2") != 0;
+  return avx2;
+}
+
+// classify_lanes<4>() compiled for AVX2 (without FMA: no multiply-add is contracted, the
+// results are those of the other paths); only where has_four_lanes().
+template <typename Classifier, typename Store, typename InGeneral>
+__attribute__((target("avx2"))) std::size_t
+classify_four_at_a_time(const Classifier& classifier, std::size_t v, std::size_t e,
+                        bool facing_side_only, const Store& store, const InGeneral& in_general)
+{
+  return classify_lanes<4>(classifier, v, e, facing_side_only, store, in_general);
+}
+#endif
+
 // What a sweep's classification pass gathers besides the classes.
 struct Classification_summary
 {
@@ -522,23 +632,14 @@ void classify_vertices(const Level_classifier<TriangleMesh>& classifier, std::si
       part.out_of_range += l.out_of_range;
     };
     std::size_t v = b;
+#ifdef CGAL_HIGHLIGHT_LINES_FOUR_LANES
+    if (has_four_lanes())
+      v = classify_four_at_a_time(local_classifier, v, e, local_facing_side_only, store_common_case,
+                                  classify_in_general);
+#endif
 #ifdef CGAL_HIGHLIGHT_LINES_TWO_LANES
-    for (; v + 1 < e; v += 2) {
-      typename Level_classifier<TriangleMesh>::Common_case common[2];
-      const unsigned found =
-          local_classifier.classify_common_case_pair(v, local_facing_side_only, common);
-      if (found == 3) {
-        store_common_case(v, common[0]);
-        store_common_case(v + 1, common[1]);
-        continue;
-      }
-      for (std::size_t i = 0; i < 2; ++i) {
-        if (found & (1u << i))
-          store_common_case(v + i, common[i]);
-        else
-          classify_in_general(v + i);
-      }
-    }
+    v = classify_lanes<2>(local_classifier, v, e, local_facing_side_only, store_common_case,
+                          classify_in_general);
 #endif
     for (; v < e; ++v) {
       typename Level_classifier<TriangleMesh>::Common_case common;
