@@ -458,6 +458,8 @@ int main(int argc, char** argv)
                 << ", lines targeted " << it.lines_targeted;
       if (it.restrained_vertices > 0)
         std::cout << ", " << it.restrained_vertices << " vertices held back against flips";
+      if (it.extrapolation > 1)
+        std::cout << ", slow tail extrapolated (step x " << it.extrapolation << ")";
       std::cout << "\n";
       return true;
     };
