@@ -541,6 +541,18 @@ private:
     return m;
   }
 
+  // x solves its program to optimality with no vertex at its trust radius: the minimiser of
+  // the program's quadratic itself, which the steps' geometric tail is made of.
+  bool is_inner_minimiser(const std::vector<double>& x, const Box_QP_report& solved) const
+  {
+    if (solved.status != Box_QP_status::OPTIMAL)
+      return false;
+    for (std::size_t i = 0; i < x.size(); ++i)
+      if (!(std::abs(x[i]) < 0.99 * radius_[i]))
+        return false;
+    return true;
+  }
+
   // The slow tail. With the weights frozen at each iterate, the iteration is a fixed-point
   // iteration whose steps shrink by a factor ρ per iteration once the trust region no longer
   // binds; on fine meshes with deep dents ρ approaches 1 (0.64 at 2.4·10^4 movable vertices,
@@ -558,10 +570,7 @@ private:
     std::vector<double> previous;
     previous.swap(last_program_step_);
     const std::size_t n = x.size();
-    bool inside = step.solver.status == Box_QP_status::OPTIMAL;
-    for (std::size_t i = 0; i < n && inside; ++i)
-      inside = std::abs(x[i]) < 0.99 * radius_[i];
-    if (!inside)
+    if (!is_inner_minimiser(x, step.solver))
       return;
     last_program_step_ = x;
     if (previous.size() != n || !(previous_value_ < value_before_last_step_))
@@ -670,11 +679,8 @@ private:
     applied_ = x;
     previous_step_ = x;
     // Free: the program's own minimiser, no vertex held against a flip or at its trust radius.
-    bool free = step.step_scale == 1 && step.restrained_vertices == 0 && step.extrapolation == 1 &&
-                step.solver.status == Box_QP_status::OPTIMAL;
-    for (std::size_t i = 0; i < n && free; ++i)
-      free = std::abs(x[i]) < 0.99 * radius_[i];
-    free_steps_.push_back(free);
+    free_steps_.push_back(step.step_scale == 1 && step.restrained_vertices == 0 &&
+                          step.extrapolation == 1 && is_inner_minimiser(x, step.solver));
     step.max_displacement = max_abs(x);
     step.relative_max_displacement = step.max_displacement / mean_edge_length_;
     // Blocked: the program wanted a move that counts, and no vertex could take any of it.
