@@ -240,10 +240,13 @@ void fairing_at_scale(int n, int iterations)
   double last = now();
   auto visitor = [&](const HL::Fairing_report::Iteration& it) {
     const double t = now();
-    std::printf("   iteration: %7.2f s, peak so far %8.1f MiB, q_fair %.6g, q_diff %.6g, "
-                "max |x| / e %.3g, lines %zu, QP %zu active-set steps\n",
-                t - last, status_mib("VmHWM"), it.fairness_energy, it.difference_energy,
-                it.relative_max_displacement, it.lines_targeted, it.solver.iterations);
+    std::printf("   iteration: %7.2f s, peak so far %8.1f MiB, F before it %.6g (q_fair %.6g, "
+                "q_diff %.6g), "
+                "max |x| / e %.3g%s, lines %zu, QP %zu active-set steps, %zu factorisations\n",
+                t - last, status_mib("VmHWM"), it.target_value, it.fairness_energy,
+                it.difference_energy, it.relative_max_displacement,
+                it.extrapolation > 1 ? " (accelerated)" : "", it.lines_targeted,
+                it.solver.iterations, it.solver.factorizations);
     std::fflush(stdout);
     last = now();
     return true;

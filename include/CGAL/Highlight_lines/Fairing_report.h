@@ -56,10 +56,10 @@ struct Fairing_report
     /// 1 when the step taken is the solution of a program; otherwise the smallest fraction of
     /// its displacement a vertex was given, where moving it further would have flipped a face.
     double step_scale = 1;
-    /// 1 when the step taken is the solution of a program; above 1 where that solution
-    /// continued the geometric tail of the last steps (the slowest mode of a fairing whose steps
-    /// shrink slowly) and was stretched by this factor towards its limit, within the trust
-    /// region.
+    /// 1 when the step taken is the solution of a program; above 1 where the steps shrank
+    /// slowly and the step was accelerated towards the limit their tail predicts (from the
+    /// last steps and solutions, within the trust region): the length of the step taken over
+    /// the length of the program's solution.
     double extrapolation = 1;
     /// Movable vertices held back because the program's solution would have flipped a face
     /// around them (a face whose normal turns by more than 90° from its input normal): their

@@ -18,6 +18,7 @@
 #include <CGAL/Highlight_lines/internal/ogh_curve.h>
 #include <CGAL/Highlight_lines/internal/willmore_energy.h>
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -105,6 +106,8 @@ public:
     std::size_t blocked_in_a_row = 0;
     free_steps_.clear();
     last_program_step_.clear();
+    tail_solution_differences_.clear();
+    tail_step_differences_.clear();
     for (std::size_t iteration = 0;; ++iteration) {
       take_checkpoint();
       Fairing_report::Iteration step;
@@ -119,7 +122,7 @@ public:
       }
       set_step_bounds();
       std::vector<double> x = solve_program(step, iteration, report);
-      extrapolate_tail(x, step);
+      accelerate_tail(x, step);
       take_step(x, directions, step);
       report.history.push_back(step);
       sweeper_.update_positions();
@@ -554,49 +557,72 @@ private:
   }
 
   // The slow tail. With the weights frozen at each iterate, the iteration is a fixed-point
-  // iteration whose steps shrink by a factor ρ per iteration once the trust region no longer
-  // binds; on fine meshes with deep dents ρ approaches 1 (0.64 at 2.4·10^4 movable vertices,
-  // 0.99 at 10^5: hundreds of iterations). There the steps are one mode, each ρ times the one
-  // before, and all of them together move the mesh by s / (1 - ρ) from where the step s starts
-  // (Aitken's extrapolation of a linear sequence). When the program's solution x and the last
-  // solution taken as solved are both inside the trust region, point the same way (cosine
-  // above 0.95) and shrink slowly (0.5 <= ρ < 1, ρ = x·x' / |x'|², faster tails end by the
-  // convergence tests), and the last step lowered F, x is stretched towards that limit, as far
-  // as the trust region allows. The next step corrects what the extrapolation missed; it is
-  // not free (convergence tests skip it), and a rise of F shrinks the trust region as usual.
-  void extrapolate_tail(std::vector<double>& x, Fairing_report::Iteration& step)
+  // iteration y -> y + x(y) (y the displacements so far, x(y) the program's solution there)
+  // whose steps shrink by a factor ρ per iteration once the trust region no longer binds; on
+  // fine meshes with deep dents ρ approaches 1 (0.64 at 2.4·10^4 movable vertices, 0.99 at
+  // 10^5: hundreds of iterations). There x is nearly linear in y, x(y) ≈ x_k + J (y - y_k),
+  // and the last steps tell J along the directions they took: with the differences ΔY of the
+  // last m steps and ΔX of the solutions between them, the combination γ minimising
+  // |x_k - ΔX γ| is where the linear model puts the smallest residual, and the step
+  // x_k - (ΔY + ΔX) γ goes there (Anderson acceleration, a secant method; with one difference
+  // and collinear steps it is Aitken's extrapolation s / (1 - ρ)). It is used while the tail
+  // is slow (|x_k| >= |x_{k-1}| / 2; faster tails end by the convergence tests), from steps that
+  // were all inner minimisers of their programs and lowered F, cut to the trust region. The
+  // next step corrects what the model missed; it is not free (convergence tests skip it), and
+  // a rise of F shrinks the trust region as usual and forgets the differences.
+  void accelerate_tail(std::vector<double>& x, Fairing_report::Iteration& step)
   {
     extrapolation_cut_ = false;
-    std::vector<double> previous;
-    previous.swap(last_program_step_);
     const std::size_t n = x.size();
-    if (!is_inner_minimiser(x, step.solver))
+    const bool continues = is_inner_minimiser(x, step.solver) && last_program_step_.size() == n &&
+                           applied_.size() == n && previous_value_ < value_before_last_step_;
+    if (!continues) {
+      tail_solution_differences_.clear();
+      tail_step_differences_.clear();
+      last_program_step_.clear();
+      if (is_inner_minimiser(x, step.solver))
+        last_program_step_ = x;
       return;
-    last_program_step_ = x;
-    if (previous.size() != n || !(previous_value_ < value_before_last_step_))
-      return;
-    double xp = 0, pp = 0, xx = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      xp += x[i] * previous[i];
-      pp += previous[i] * previous[i];
-      xx += x[i] * x[i];
     }
-    if (!(pp > 0 && xx > 0) || xp < 0.95 * std::sqrt(xx * pp))
+    Eigen::Map<const Eigen::VectorXd> solution(x.data(), Eigen::Index(n));
+    Eigen::Map<const Eigen::VectorXd> previous(last_program_step_.data(), Eigen::Index(n));
+    tail_solution_differences_.push_back(solution - previous);
+    tail_step_differences_.push_back(
+        Eigen::Map<const Eigen::VectorXd>(applied_.data(), Eigen::Index(n)));
+    if (tail_solution_differences_.size() > tail_memory) {
+      tail_solution_differences_.erase(tail_solution_differences_.begin());
+      tail_step_differences_.erase(tail_step_differences_.begin());
+    }
+    const bool slow = solution.squaredNorm() >= 0.25 * previous.squaredNorm();
+    last_program_step_ = x;
+    if (!slow)
       return;
-    const double rho = xp / pp;
-    if (!(rho >= 0.5 && rho < 1))
+    const Eigen::Index m = Eigen::Index(tail_solution_differences_.size());
+    Eigen::MatrixXd dx(Eigen::Index(n), m), dy(Eigen::Index(n), m);
+    for (Eigen::Index j = 0; j < m; ++j) {
+      dx.col(j) = tail_solution_differences_[std::size_t(j)];
+      dy.col(j) = tail_step_differences_[std::size_t(j)];
+    }
+    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(dx);
+    if (qr.rank() < m) // differences that repeat each other: the model is not determined
       return;
-    const double limit = 1 / (1 - rho);
-    double factor = limit;
+    const Eigen::VectorXd gamma = qr.solve(solution);
+    Eigen::VectorXd accelerated = solution - (dy + dx) * gamma;
+    // A model that shortens the step or turns it against the solution is not the tail's.
+    if (!(accelerated.dot(solution) > solution.squaredNorm()))
+      return;
+    double factor = 1;
     for (std::size_t i = 0; i < n; ++i)
-      if (x[i] != 0)
-        factor = (std::min)(factor, radius_[i] / std::abs(x[i]));
-    extrapolation_cut_ = factor < limit;
-    if (!(factor > 1))
+      if (accelerated[Eigen::Index(i)] != 0)
+        factor = (std::min)(factor, radius_[i] / std::abs(accelerated[Eigen::Index(i)]));
+    extrapolation_cut_ = factor < 1;
+    accelerated *= factor;
+    const double stretched = accelerated.norm() / solution.norm();
+    if (!(stretched > 1))
       return;
-    for (double& v : x)
-      v *= factor;
-    step.extrapolation = factor;
+    for (std::size_t i = 0; i < n; ++i)
+      x[i] = accelerated[Eigen::Index(i)];
+    step.extrapolation = stretched;
   }
 
   // Moves the movable vertices by x_i N_i without flipping a face (flip_guard.h). Where the
@@ -819,6 +845,9 @@ private:
   std::vector<double> applied_;  // the last step taken
   std::vector<char> free_steps_; // per step taken: the program's minimiser, see take_step()
   std::vector<double> last_program_step_; // the last solution inside the trust region, as solved
+  // The slow tail's differences of successive solutions and steps, see accelerate_tail().
+  static constexpr std::size_t tail_memory = 5;
+  std::vector<Eigen::VectorXd> tail_solution_differences_, tail_step_differences_;
   double value_before_last_step_ = std::numeric_limits<double>::quiet_NaN(); // F
   bool extrapolation_cut_ = false; // the last step's extrapolation stopped at the trust region
   double predicted_decrease_ = std::numeric_limits<double>::quiet_NaN();
