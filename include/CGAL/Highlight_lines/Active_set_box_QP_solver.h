@@ -1242,6 +1242,7 @@ private:
     if (is_analyzed(Q, &analyzed_position_))
       return;
     Sparse_matrix pattern = Q;
+    bool grown = false;
     if (analyzed_outer_.size() == static_cast<std::size_t>(n + 1)) {
       Sparse_matrix last(n, n);
       last.resizeNonZeros(static_cast<Eigen::Index>(analyzed_inner_.size()));
@@ -1249,18 +1250,25 @@ private:
       std::copy(analyzed_inner_.begin(), analyzed_inner_.end(), last.innerIndexPtr());
       std::fill(last.valuePtr(), last.valuePtr() + last.nonZeros(), 1.);
       Sparse_matrix joined = Q.cwiseAbs() + last;
-      if (double(joined.nonZeros()) <= 1.25 * double(Q.nonZeros()))
+      if (double(joined.nonZeros()) <= 1.25 * double(Q.nonZeros())) {
         pattern = std::move(joined);
+        grown = true;
+      }
     }
-    Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> permutation;
     // The pattern is stored whole (both triangles and the diagonal), as Eigen's AMD routine
     // wants it: a copy of it saves the symmetrisation of Eigen::AMDOrdering.
     analyzed_outer_.assign(pattern.outerIndexPtr(), pattern.outerIndexPtr() + n + 1);
     analyzed_inner_.assign(pattern.innerIndexPtr(), pattern.innerIndexPtr() + pattern.nonZeros());
-    Eigen::internal::minimum_degree_ordering(pattern, permutation);
-    // AMD returns, for each elimination position, the variable eliminated there.
-    const std::vector<int> ordering(permutation.indices().data(), permutation.indices().data() + n);
-    ldlt_.analyze(n, analyzed_outer_.data(), analyzed_inner_.data(), ordering);
+    // A pattern that only grew by a few entries keeps its ordering: they add little fill, and
+    // the ordering is half of an analysis (a fairing of ~100 variables analyses at each of its
+    // first iterations, as nodes move onto new edges).
+    if (!grown || analyzed_ordering_.size() != static_cast<std::size_t>(n)) {
+      Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> permutation;
+      Eigen::internal::minimum_degree_ordering(pattern, permutation);
+      // AMD returns, for each elimination position, the variable eliminated there.
+      analyzed_ordering_.assign(permutation.indices().data(), permutation.indices().data() + n);
+    }
+    ldlt_.analyze(n, analyzed_outer_.data(), analyzed_inner_.data(), analyzed_ordering_);
     is_analyzed(Q, &analyzed_position_); // contained by construction: fills the positions
   }
 
@@ -2219,6 +2227,7 @@ private:
   // The pattern the symbolic analysis of ldlt_ is for, and the position in it of each entry
   // of the current P.
   std::vector<int> analyzed_outer_, analyzed_inner_, analyzed_position_;
+  std::vector<int> analyzed_ordering_; // for each elimination position, the variable there
 
   // The last factorisation and the free set it is for.
   internal::Supernodal_LDLT ldlt_;

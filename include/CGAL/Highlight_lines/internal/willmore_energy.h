@@ -71,6 +71,8 @@ freeze_willmore_weights(const std::vector<std::array<double, 3>>& positions,
   frozen.energy_vertices = energy_vertices;
   frozen.area.assign(energy_vertices.size(), 0.0);
   frozen.neighbours.resize(energy_vertices.size());
+  for (auto& ring : frozen.neighbours)
+    ring.reserve(8); // a ring of up to 8 without regrowing (6 on regular meshes)
 
   std::vector<int> row_of_vertex(positions.size(), -1);
   for (std::size_t row = 0; row < energy_vertices.size(); ++row) {
