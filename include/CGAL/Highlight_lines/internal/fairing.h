@@ -16,6 +16,7 @@
 #include <CGAL/Highlight_lines/internal/fairing_region.h>
 #include <CGAL/Highlight_lines/internal/node_jacobian.h>
 #include <CGAL/Highlight_lines/internal/ogh_curve.h>
+#include <CGAL/Highlight_lines/internal/program_pattern.h>
 #include <CGAL/Highlight_lines/internal/willmore_energy.h>
 
 #include <Eigen/Dense>
@@ -407,6 +408,13 @@ private:
     solver_.resize(n);
     const double w1 = options_.fairness_weight;
     const double w2 = options_.difference_weight / (length_scale_ * length_scale_ * length_scale_);
+    // The first program declares every entry any program of this fairing can hold (zeros
+    // added), so that the solver's symbolic analysis serves them all (program_pattern.h).
+    if (!pattern_declared_) {
+      for (const auto& pair : variable_pairs_within_three_edges(region_))
+        solver_.set_P(std::size_t(pair.first), std::size_t(pair.second), 0.0);
+      pattern_declared_ = true;
+    }
     // q_fair: the Willmore energy with frozen weights, an exact quadratic in x.
     double trace = 0;
     step.fairness_energy = add_fairness_terms(directions, w1, trace);
@@ -837,13 +845,14 @@ private:
   std::vector<double> previous_step_;
   std::vector<Vec3> energy_normals_;
   Flip_guard flip_guard_;
-  std::vector<double> radius_;   // trust radius of each movable vertex in the current program
-  std::vector<double> hold_;     // its hold after a step that would have flipped a face
-  double trust_factor_ = 1;      // μ
-  bool blocked_ = false;         // the last step could move no vertex
-  std::vector<char> restrained_; // held back against a flip in the last step
-  std::vector<double> applied_;  // the last step taken
-  std::vector<char> free_steps_; // per step taken: the program's minimiser, see take_step()
+  std::vector<double> radius_;    // trust radius of each movable vertex in the current program
+  std::vector<double> hold_;      // its hold after a step that would have flipped a face
+  double trust_factor_ = 1;       // μ
+  bool blocked_ = false;          // the last step could move no vertex
+  bool pattern_declared_ = false; // see assemble_program()
+  std::vector<char> restrained_;  // held back against a flip in the last step
+  std::vector<double> applied_;   // the last step taken
+  std::vector<char> free_steps_;  // per step taken: the program's minimiser, see take_step()
   std::vector<double> last_program_step_; // the last solution inside the trust region, as solved
   // The slow tail's differences of successive solutions and steps, see accelerate_tail().
   static constexpr std::size_t tail_memory = 5;
