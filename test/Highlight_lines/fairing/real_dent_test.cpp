@@ -26,8 +26,11 @@
 #include <cstdint>
 #include <exception>
 #include <fstream>
+#include <functional>
+#include <set>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -231,6 +234,68 @@ TEST_P(RealDentTest, ScanLikeTriangulationsKeepTheHardGuarantees)
     SCOPED_TRACE(c.name + ", jitter 0.45, " + energy_name(energy));
     Mesh result;
     fair_with_hard_guarantees(c, energy, movable, result);
+  }
+}
+
+// A solver that records the pairs set_P() is called with: the first program's, and those of
+// the later programs with a nonzero value.
+struct Pattern_recording_solver
+{
+  HL::Active_set_box_QP_solver inner;
+  std::size_t programs = 0;
+  std::set<std::pair<std::size_t, std::size_t>> declared, set_later;
+  void resize(std::size_t n)
+  {
+    ++programs;
+    inner.resize(n);
+  }
+  void set_P(std::size_t i, std::size_t j, double v)
+  {
+    if (programs == 1)
+      declared.emplace(i, j);
+    else if (v != 0)
+      set_later.emplace(i, j);
+    inner.set_P(i, j, v);
+  }
+  void set_q(std::size_t i, double v) { inner.set_q(i, v); }
+  void set_r(double v) { inner.set_r(v); }
+  void set_l(std::size_t i, double v) { inner.set_l(i, v); }
+  void set_u(std::size_t i, double v) { inner.set_u(i, v); }
+  void set_warm_start(const std::vector<double>& x0) { inner.set_warm_start(x0); }
+  template <typename OutputIterator>
+  HL::Box_QP_report solve(OutputIterator out)
+  {
+    return inner.solve(out);
+  }
+};
+
+// The first program of a fairing declares every entry that any of its programs sets, so that
+// one symbolic analysis of the solver serves them all (internal/program_pattern.h): nodes move
+// onto other edges and clamped cotangent weights cross zero from one iteration to the next, and
+// the sliver and folded triangles of a scan-like triangulation do that most. Every energy.
+TEST_P(RealDentTest, TheFirstProgramDeclaresEveryEntryOfTheLaterOnes)
+{
+  HB::Real_dent_options options;
+  options.max_centres = 1;
+  options.depths = {1.0};
+  options.jitter = 0.45;
+  const std::vector<HB::Real_dent_case> cases = HB::make_real_dent_cases(mesh, stem, 7, options);
+  ASSERT_EQ(cases.size(), 1u) << stem;
+  const HB::Real_dent_case& c = cases.front();
+  for (const HL::Fairness_energy energy : all_energies) {
+    SCOPED_TRACE(c.name + ", jitter 0.45, " + energy_name(energy));
+    Mesh result = c.input;
+    Pattern_recording_solver solver;
+    CGAL::fair_with_highlight_lines(
+        result, c.region, c.lights,
+        HLP::combine(HLP::fairness_energy(energy), HLP::qp_solver(std::ref(solver))));
+    EXPECT_GE(solver.programs, 2u);
+    std::size_t undeclared = 0;
+    for (const auto& entry : solver.set_later)
+      undeclared += solver.declared.count(entry) == 0 ? 1 : 0;
+    EXPECT_EQ(undeclared, 0u) << "undeclared, of " << solver.set_later.size()
+                              << " entries set in the " << solver.programs - 1
+                              << " programs after the first";
   }
 }
 
