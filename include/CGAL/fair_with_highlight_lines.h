@@ -163,7 +163,7 @@ last three steps, each below `10 ε ē`, it fell by less than `10^-3` of itself 
 after the iteration bound.
 
 - *Step control*: `r_i = μ b_i`, `b_i` eq. 16's bound (half the shortest edge at `V_i`) and
-  `μ` a trust-region factor for the whole region: it starts at 1, doubles (up to 64) when a step
+  `μ` a trust-region factor for the whole region: it starts at 2, doubles (up to 64) when a step
   lowered `F` by at least 3/4 of what the program predicted and some vertex used its whole
   bound, and halves when `F` fell by less than 1/4 of it; `r_i` stays between `b_i / 1024` and
   `4 b_i + ē`.
