@@ -1,4 +1,5 @@
 // fair_with_highlight_lines(): invariants, ground truth, Jacobian, bad input.
+#include "../forwarding_solver.h"
 #include "../model/test_meshes.h"
 
 #include <CGAL/Aff_transformation_3.h>
@@ -513,17 +514,9 @@ TEST(BadFairingInput, ClearErrorsAndTheMeshUntouched)
 }
 
 // A solver that fails at a given call, to check the rollback.
-struct Failing_solver
+struct Failing_solver : test::Forwarding_solver
 {
-  HL::Active_set_box_QP_solver inner;
   int calls = 0, fail_at = 2;
-  void resize(std::size_t n) { inner.resize(n); }
-  void set_P(std::size_t i, std::size_t j, double v) { inner.set_P(i, j, v); }
-  void set_q(std::size_t i, double v) { inner.set_q(i, v); }
-  void set_r(double v) { inner.set_r(v); }
-  void set_l(std::size_t i, double v) { inner.set_l(i, v); }
-  void set_u(std::size_t i, double v) { inner.set_u(i, v); }
-  void set_warm_start(const std::vector<double>& x0) { inner.set_warm_start(x0); }
   template <typename OutputIterator>
   HL::Box_QP_report solve(OutputIterator out)
   {

@@ -12,6 +12,7 @@
 #include "../../../benchmark/Highlight_lines/fairing_quality.h"
 #include "../../../benchmark/Highlight_lines/real_dent_cases.h"
 #include "../flipped_faces.h"
+#include "../forwarding_solver.h"
 
 #include <CGAL/Highlight_lines/Fairing_report.h>
 #include <CGAL/Highlight_lines/fairing_building_blocks.h>
@@ -138,6 +139,17 @@ std::string energy_name(HL::Fairness_energy energy)
 }
 
 // One shared mesh per test; skipped if ../shared/data does not have it.
+// Scan-like triangulations: the mesh jittered tangentially by up to 0.45 ē before the dent
+// (benchmark_real_dents --jitter 0.45 --seed 7), one 1 ē dent.
+std::vector<HB::Real_dent_case> scan_like_dent_cases(const Mesh& mesh, const std::string& stem)
+{
+  HB::Real_dent_options options;
+  options.max_centres = 1;
+  options.depths = {1.0};
+  options.jitter = 0.45;
+  return HB::make_real_dent_cases(mesh, stem, 7, options);
+}
+
 class RealDentTest : public ::testing::TestWithParam<const char*>
 {
 protected:
@@ -221,11 +233,7 @@ TEST_P(RealDentTest, FairingKeepsItsGuaranteesAndRemovesDeepDents)
 // fairings ended with an exception or at the iteration bound.
 TEST_P(RealDentTest, ScanLikeTriangulationsKeepTheHardGuarantees)
 {
-  HB::Real_dent_options options;
-  options.max_centres = 1;
-  options.depths = {1.0};
-  options.jitter = 0.45;
-  const std::vector<HB::Real_dent_case> cases = HB::make_real_dent_cases(mesh, stem, 7, options);
+  const std::vector<HB::Real_dent_case> cases = scan_like_dent_cases(mesh, stem);
   ASSERT_EQ(cases.size(), 1u) << stem;
   const HB::Real_dent_case& c = cases.front();
   std::vector<Mesh::Vertex_index> movable;
@@ -239,9 +247,8 @@ TEST_P(RealDentTest, ScanLikeTriangulationsKeepTheHardGuarantees)
 
 // A solver that records the pairs set_P() is called with: the first program's, and those of
 // the later programs with a nonzero value.
-struct Pattern_recording_solver
+struct Pattern_recording_solver : test::Forwarding_solver
 {
-  HL::Active_set_box_QP_solver inner;
   std::size_t programs = 0;
   std::set<std::pair<std::size_t, std::size_t>> declared, set_later;
   void resize(std::size_t n)
@@ -257,16 +264,6 @@ struct Pattern_recording_solver
       set_later.emplace(i, j);
     inner.set_P(i, j, v);
   }
-  void set_q(std::size_t i, double v) { inner.set_q(i, v); }
-  void set_r(double v) { inner.set_r(v); }
-  void set_l(std::size_t i, double v) { inner.set_l(i, v); }
-  void set_u(std::size_t i, double v) { inner.set_u(i, v); }
-  void set_warm_start(const std::vector<double>& x0) { inner.set_warm_start(x0); }
-  template <typename OutputIterator>
-  HL::Box_QP_report solve(OutputIterator out)
-  {
-    return inner.solve(out);
-  }
 };
 
 // The first program of a fairing declares every entry that any of its programs sets, so that
@@ -275,11 +272,7 @@ struct Pattern_recording_solver
 // the sliver and folded triangles of a scan-like triangulation do that most. Every energy.
 TEST_P(RealDentTest, TheFirstProgramDeclaresEveryEntryOfTheLaterOnes)
 {
-  HB::Real_dent_options options;
-  options.max_centres = 1;
-  options.depths = {1.0};
-  options.jitter = 0.45;
-  const std::vector<HB::Real_dent_case> cases = HB::make_real_dent_cases(mesh, stem, 7, options);
+  const std::vector<HB::Real_dent_case> cases = scan_like_dent_cases(mesh, stem);
   ASSERT_EQ(cases.size(), 1u) << stem;
   const HB::Real_dent_case& c = cases.front();
   for (const HL::Fairness_energy energy : all_energies) {

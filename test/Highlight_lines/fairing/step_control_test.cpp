@@ -1,6 +1,7 @@
 // The fairing's step control: flips are judged against the input and held back locally, a
 // stall returns the best iterate with a status instead of throwing, and the trust region lets
 // deep dents converge within the iteration bound.
+#include "../forwarding_solver.h"
 #include "../flipped_faces.h"
 #include "../model/test_meshes.h"
 
@@ -65,9 +66,8 @@ const Lights lights_above(Point(0, 0, 3), Vector(1, 0, 0), Vector(0, 0, 1), 0.06
 
 // Wraps the built-in solver and replaces some of its solutions, to provoke what the step control
 // must handle.
-struct Meddling_solver
+struct Meddling_solver : test::Forwarding_solver
 {
-  HL::Active_set_box_QP_solver inner;
   int calls = 0;
   std::function<void(int call, std::vector<double>& x)> meddle;
   std::size_t n = 0;
@@ -76,12 +76,6 @@ struct Meddling_solver
     n = size;
     inner.resize(size);
   }
-  void set_P(std::size_t i, std::size_t j, double v) { inner.set_P(i, j, v); }
-  void set_q(std::size_t i, double v) { inner.set_q(i, v); }
-  void set_r(double v) { inner.set_r(v); }
-  void set_l(std::size_t i, double v) { inner.set_l(i, v); }
-  void set_u(std::size_t i, double v) { inner.set_u(i, v); }
-  void set_warm_start(const std::vector<double>& x0) { inner.set_warm_start(x0); }
   template <typename OutputIterator>
   HL::Box_QP_report solve(OutputIterator out)
   {
