@@ -854,9 +854,10 @@ private:
   std::vector<double> radius_; // trust radius of each movable vertex in the current program
   std::vector<double> hold_;   // its hold after a step that would have flipped a face
   // μ at the first step: twice eq. 16's bound, the shortest edge at V_i. Measured against 1
-  // (the paper's bound): real dents (30 cases) 3.07 -> 2.56 x PMP::fair's time, quality the
-  // same; hoods of 9,173 movable vertices 2.06 -> 1.49 x, 2.4·10^4 2.44 -> 1.95 x. Larger
-  // factors gain nothing more on real dents and lose on scan-like triangulations.
+  // (the paper's bound): real dents (30 cases) 3.1 -> 2.6 x PMP::fair's time, quality the
+  // same; hoods of 9,173 movable vertices 2.1 -> 1.4 x, 2.4·10^4 2.4 -> 1.9 x. Factors of 4
+  // and 8 gain nothing more on real dents and lose on scan-like triangulations (jitter 0.45 ē:
+  // median iterations 11 with 2, 11 and 15 with 4 and 8).
   static constexpr double initial_trust_factor = 2;
   double trust_factor_ = initial_trust_factor; // μ
   bool blocked_ = false;                       // the last step could move no vertex
