@@ -39,6 +39,11 @@ public:
   {
     n_ = n;
     upper_triplets_.clear();
+    // A small problem sums P in place (the fairing of a real dent makes ~300 set_P() calls per
+    // entry of its 100-300 variables); a large one collects triplets (n² would not fit).
+    dense_ = n <= dense_size_limit;
+    dense_values_.assign(dense_ ? n * (n + 1) / 2 : 0, 0.);
+    dense_present_.assign(dense_values_.size(), 0);
     c_.setZero(static_cast<Eigen::Index>(n));
     r_ = 0.;
     l_.setConstant(static_cast<Eigen::Index>(n), -std::numeric_limits<double>::infinity());
@@ -59,7 +64,13 @@ public:
       note_setter_error("set_P", i, j);
       return;
     }
-    upper_triplets_.emplace_back(static_cast<int>(i), static_cast<int>(j), value);
+    if (dense_) {
+      const std::size_t at = j * (j + 1) / 2 + i;
+      dense_values_[at] += value;
+      dense_present_[at] = 1;
+    } else {
+      upper_triplets_.emplace_back(static_cast<int>(i), static_cast<int>(j), value);
+    }
   }
 
   void add_P(const Sparse_matrix& P)
@@ -73,11 +84,11 @@ public:
       }
       return;
     }
-    upper_triplets_.reserve(upper_triplets_.size() + static_cast<std::size_t>(P.nonZeros()));
+    if (!dense_)
+      upper_triplets_.reserve(upper_triplets_.size() + static_cast<std::size_t>(P.nonZeros()));
     for (int col = 0; col < P.outerSize(); ++col)
       for (Sparse_matrix::InnerIterator it(P, col); it; ++it)
-        if (it.row() <= col)
-          upper_triplets_.emplace_back(static_cast<int>(it.row()), col, it.value());
+        add_P(static_cast<std::size_t>(it.row()), static_cast<std::size_t>(col), it.value());
   }
 
   void add_q(std::size_t i, double value)
@@ -120,6 +131,13 @@ public:
         message = os.str();
         return Box_QP_status::INVALID_INPUT;
       }
+    for (std::size_t j = 0, at = 0; j < (dense_ ? n_ : 0); ++j)
+      for (std::size_t i = 0; i <= j; ++i, ++at)
+        if (!std::isfinite(dense_values_[at])) { // a sum is finite if its terms are
+          os << "P(" << i << ", " << j << ") is " << dense_values_[at];
+          message = os.str();
+          return Box_QP_status::INVALID_INPUT;
+        }
     if (!std::isfinite(r_)) {
       os << "r is " << r_;
       message = os.str();
@@ -164,39 +182,14 @@ public:
   void assemble()
   {
     const int n = static_cast<int>(n_);
-    std::vector<int> start(n_ + 1, 0);
-    for (const Triplet& t : upper_triplets_)
-      ++start[t.col() + 1];
-    for (int j = 0; j < n; ++j)
-      start[j + 1] += start[j];
-    std::vector<std::pair<int, double>> by_column(upper_triplets_.size());
-    {
-      std::vector<int> next(start.begin(), start.end() - 1);
-      for (const Triplet& t : upper_triplets_)
-        by_column[next[t.col()]++] = {t.row(), t.value()};
-    }
     // The upper triangle with duplicates summed, by columns, rows in no particular order;
     // the diagonal entry first.
-    std::vector<int> upper_start(n_ + 1, 0), upper_rows, slot(n_, -1);
+    std::vector<int> upper_start(n_ + 1, 0), upper_rows;
     std::vector<double> upper_values;
-    upper_rows.reserve(by_column.size() / 2 + n_);
-    upper_values.reserve(upper_rows.capacity());
-    for (int j = 0; j < n; ++j) {
-      const int first = static_cast<int>(upper_rows.size());
-      upper_rows.push_back(j);
-      upper_values.push_back(0.);
-      slot[j] = first;
-      for (int p = start[j]; p < start[j + 1]; ++p) {
-        const int i = by_column[p].first;
-        if (slot[i] < first) {
-          slot[i] = static_cast<int>(upper_rows.size());
-          upper_rows.push_back(i);
-          upper_values.push_back(0.);
-        }
-        upper_values[slot[i]] += by_column[p].second;
-      }
-      upper_start[j + 1] = static_cast<int>(upper_rows.size());
-    }
+    if (dense_)
+      gather_dense_upper(upper_start, upper_rows, upper_values);
+    else
+      gather_triplet_upper(upper_start, upper_rows, upper_values);
     // Column j of Q: the rows i < j (its strictly upper part), then the rows k >= j (the
     // entries (j, k) of the upper triangle).
     std::vector<int> upper_count(n_, 0), lower_count(n_, 0);
@@ -302,6 +295,61 @@ public:
   }
 
 private:
+  // The triplets' upper triangle by columns, each entry summed in the order of the set_P()
+  // calls: a counting sort, then a marker array.
+  void gather_triplet_upper(std::vector<int>& upper_start, std::vector<int>& upper_rows,
+                            std::vector<double>& upper_values) const
+  {
+    const int n = static_cast<int>(n_);
+    std::vector<int> start(n_ + 1, 0);
+    for (const Triplet& t : upper_triplets_)
+      ++start[t.col() + 1];
+    for (int j = 0; j < n; ++j)
+      start[j + 1] += start[j];
+    std::vector<std::pair<int, double>> by_column(upper_triplets_.size());
+    {
+      std::vector<int> next(start.begin(), start.end() - 1);
+      for (const Triplet& t : upper_triplets_)
+        by_column[next[t.col()]++] = {t.row(), t.value()};
+    }
+    std::vector<int> slot(n_, -1);
+    upper_rows.reserve(by_column.size() / 2 + n_);
+    upper_values.reserve(upper_rows.capacity());
+    for (int j = 0; j < n; ++j) {
+      const int first = static_cast<int>(upper_rows.size());
+      upper_rows.push_back(j);
+      upper_values.push_back(0.);
+      slot[j] = first;
+      for (int p = start[j]; p < start[j + 1]; ++p) {
+        const int i = by_column[p].first;
+        if (slot[i] < first) {
+          slot[i] = static_cast<int>(upper_rows.size());
+          upper_rows.push_back(i);
+          upper_values.push_back(0.);
+        }
+        upper_values[slot[i]] += by_column[p].second;
+      }
+      upper_start[j + 1] = static_cast<int>(upper_rows.size());
+    }
+  }
+
+  // The same from the dense sums (the same values: each summed in the order of the calls).
+  void gather_dense_upper(std::vector<int>& upper_start, std::vector<int>& upper_rows,
+                          std::vector<double>& upper_values) const
+  {
+    for (std::size_t j = 0; j < n_; ++j) {
+      const std::size_t column = j * (j + 1) / 2;
+      upper_rows.push_back(static_cast<int>(j));
+      upper_values.push_back(dense_values_[column + j]);
+      for (std::size_t i = 0; i < j; ++i)
+        if (dense_present_[column + i]) {
+          upper_rows.push_back(static_cast<int>(i));
+          upper_values.push_back(dense_values_[column + i]);
+        }
+      upper_start[j + 1] = static_cast<int>(upper_rows.size());
+    }
+  }
+
   void note_setter_error(const char* setter, std::size_t i, std::size_t j = 0)
   {
     if (!setter_error_.empty())
@@ -313,7 +361,11 @@ private:
   }
 
   std::size_t n_ = 0;
+  static constexpr std::size_t dense_size_limit = 512; // 1 MiB of sums at most
   std::vector<Triplet> upper_triplets_;
+  bool dense_ = false;
+  std::vector<double> dense_values_; // column j at j (j + 1) / 2, rows 0 to j
+  std::vector<unsigned char> dense_present_;
   Eigen::VectorXd c_, l_, u_, diagonal_;
   double r_ = 0.;
   std::string setter_error_;

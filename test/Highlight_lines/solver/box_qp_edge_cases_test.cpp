@@ -9,6 +9,7 @@
 #include <Eigen/SparseCholesky>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iterator>
 #include <limits>
@@ -388,6 +389,45 @@ TEST(BoxQPEdgeCases, IterationLimitIsReportedWithAPointWithinTheBounds)
   ASSERT_EQ(full.report.status, Box_QP_status::OPTIMAL) << full.report.message;
   EXPECT_GT(full.report.iterations, 1u);
   EXPECT_LE(full.report.objective_value, limited.report.objective_value);
+}
+
+// set_P() adds: entries given in pieces, the lower triangle (ignored) and explicit zeros (in
+// the pattern, not in the values) give the same solution as the matrix given once, both where
+// the solver sums P in place (small problems) and where it collects triplets (large ones).
+TEST(BoxQPEdgeCases, RepeatedEntriesAreSummedAtAnySize)
+{
+  for (const int n : {40, 700}) {
+    const Sparse_matrix P = squared_path_laplacian(n);
+    auto set_program = [&](Active_set_box_QP_solver& solver) {
+      for (int i = 0; i < n; ++i) {
+        solver.set_q(i, std::cos(0.3 * i));
+        solver.set_l(i, -0.5 - 0.1 * (i % 3));
+        solver.set_u(i, 0.4 + 0.1 * (i % 5));
+      }
+    };
+    Active_set_box_QP_solver once(n), in_pieces(n);
+    set_matrix(once, P);
+    set_program(once);
+    for (int j = 0; j < P.outerSize(); ++j)
+      for (Sparse_matrix::InnerIterator it(P, j); it; ++it) {
+        const std::size_t row = static_cast<std::size_t>(it.row()), col = std::size_t(j);
+        in_pieces.set_P(row, col, 0.5 * it.value());
+        in_pieces.set_P(row, col, 0.);
+        in_pieces.set_P(row, col, 0.5 * it.value());
+      }
+    in_pieces.set_P(0, std::size_t(n - 1), 0.);
+    set_program(in_pieces);
+    const Result expected = solve(once), result = solve(in_pieces);
+    ASSERT_EQ(expected.report.status, Box_QP_status::OPTIMAL) << expected.report.message;
+    ASSERT_EQ(result.report.status, Box_QP_status::OPTIMAL) << result.report.message;
+    ASSERT_EQ(result.x.size(), std::size_t(n));
+    double largest = 0;
+    for (double v : expected.x)
+      largest = (std::max)(largest, std::abs(v));
+    for (int i = 0; i < n; ++i)
+      EXPECT_NEAR(result.x[std::size_t(i)], expected.x[std::size_t(i)], 1e-9 * largest)
+          << "n = " << n << ", i = " << i;
+  }
 }
 
 TEST(BoxQPEdgeCases, EmptyProblemIsOptimal)

@@ -157,6 +157,7 @@ double add_difference_quadratic(const Model& model, const std::vector<Matched_pi
                                 double spacing, double w, AddP&& add_P, AddQ&& add_q)
 {
   double trace = 0;
+  Node_jacobian::Row row;
   for (const Matched_piece& piece : pieces)
     for (std::size_t i = 0; i < piece.targets.size(); ++i) {
       const Raw_node& node = model.node(std::size_t(piece.nodes[i + 1]));
@@ -171,7 +172,7 @@ double add_difference_quadratic(const Model& model, const std::vector<Matched_pi
         if (!(std::abs(D) >= 0.1 * spacing))
           continue;
       }
-      const Node_jacobian::Row row = J.node_row(node, edge_vertices, model.levels, spacing);
+      J.node_row(node, edge_vertices, model.levels, spacing, row);
       const Vec3 q = node_position(model, piece.nodes[i + 1]);
       const Vec3 r{q[0] - piece.targets[i][0], q[1] - piece.targets[i][1],
                    q[2] - piece.targets[i][2]};

@@ -155,6 +155,7 @@ public:
   {
     report.number_of_movable_vertices = region_.movable.size();
     model_window_ = options_.window;
+    restrict_to_region_levels(model_window_);
     compute_model();
     report.number_of_folded_triangles = 0;
     report.number_of_sliver_triangles = 0;
@@ -264,6 +265,36 @@ private:
   }
 
   void compute_model() { sweeper_.compute_raw(lights_, model_window_, false, model_); }
+
+  // The levels that can cross R: a node of level m lies on an edge of a face of R, between
+  // ends of levels k (k s <= d < (k + 1) s), so m is in [min k, max k + 1] over R's vertices.
+  // The first model needs no other level (a line is followed out of R along its own), and the
+  // neighbourhood's other levels can hold several times their nodes. Unchanged where a
+  // vertex of R has no level (its normal parallel to the light plane).
+  void restrict_to_region_levels(Level_window& window) const
+  {
+    std::vector<Vertex_level> levels;
+    sweeper_.classify(lights_, levels);
+    long long lowest = 0, highest = 0;
+    bool any = false;
+    const Local_mesh<TriangleMesh>& lm = sweeper_.local_mesh();
+    for (std::size_t f = 0; f < region_.face_in_region.size(); ++f) {
+      if (!region_.face_in_region[f])
+        continue;
+      for (int v : lm.face_vertices[f]) {
+        const Vertex_level& level = levels[std::size_t(v)];
+        if (level.normal_side == 0 || level.out_of_range)
+          return;
+        lowest = any ? (std::min)(lowest, (long long)level.level) : (long long)level.level;
+        highest = any ? (std::max)(highest, (long long)level.level) : (long long)level.level;
+        any = true;
+      }
+    }
+    if (!any)
+      return;
+    window.lowest = (std::max)(window.lowest, lowest);
+    window.highest = (std::min)(window.highest, highest + 1);
+  }
 
   void take_checkpoint()
   {

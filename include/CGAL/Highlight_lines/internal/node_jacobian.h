@@ -71,19 +71,28 @@ public:
                const std::vector<Vertex_level>& levels, double s) const
   {
     Row row;
+    node_row(node, edge_vertices, levels, s, row);
+    return row;
+  }
+
+  // The same into `row` (cleared first), which keeps its storage from one node to the next.
+  void node_row(const Raw_node& node, const std::vector<std::array<int, 2>>& edge_vertices,
+                const std::vector<Vertex_level>& levels, double s, Row& row) const
+  {
+    row.clear();
     auto add = [&row](int var, const Vec3& d) { add_to_row(row, var, d); };
     if (node.vertex >= 0) { // eq. 13 for a node on a vertex: the vertex's new position
       const int var = region_.variable[std::size_t(node.vertex)];
       if (var >= 0)
         add(var, directions_[std::size_t(var)]);
-      return row;
+      return;
     }
     const int va = edge_vertices[std::size_t(node.edge)][0],
               vb = edge_vertices[std::size_t(node.edge)][1];
     const double da = levels[std::size_t(va)].distance, db = levels[std::size_t(vb)].distance;
     const double D = db - da;
     if (D == 0)
-      return row;
+      return;
     const double t = (double(node.level) * s - da) / D;
     const Vec3 pa = point(va), pb = point(vb);
     const Vec3 edge{pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
@@ -101,7 +110,6 @@ public:
         add(g.first, {f * edge[0], f * edge[1], f * edge[2]});
       }
     }
-    return row;
   }
 
 private:
@@ -130,7 +138,8 @@ private:
   void compute_distance_gradient(int v, Distance_row& result) const
   {
     // dÑ/dx_k = sum over faces around v containing k of N_k x (p_next(k) - p_prev(k)).
-    Row dn;
+    Row& dn = normal_gradient_;
+    dn.clear();
     for (int i = region_.vertex_face_begin[std::size_t(v)];
          i < region_.vertex_face_begin[std::size_t(v) + 1]; ++i) {
       const std::array<int, 3>& c =
@@ -151,6 +160,7 @@ private:
     const Vec3 x = cross3({p[0] - a_[0], p[1] - a_[1], p[2] - a_[2]}, h_);
     const double num = dot3(x, n), den = dot3(z_, n);
     result.clear();
+    result.reserve(dn.size() + 1);
     const int own = region_.variable[std::size_t(v)];
     for (const auto& e : dn) {
       double dnum = dot3(x, e.second);
@@ -171,6 +181,7 @@ private:
   const std::array<int, 3>* face_vertices_;
   mutable std::vector<Distance_row> gradients_;
   mutable std::vector<char> has_gradient_;
+  mutable Row normal_gradient_; // compute_distance_gradient()'s work space
 };
 
 } // namespace internal

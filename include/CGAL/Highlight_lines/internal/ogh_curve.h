@@ -159,6 +159,18 @@ public:
     double lo = begin, hi = breaks_[k + 1];
     const double span = cumulative_length_[k + 1] - cumulative_length_[k];
     double t = span > 0 ? begin + (hi - begin) * (remaining / span) : begin;
+    // A cubic Hermite guess of t(arc length) from the speeds at the piece's ends (dt/dL is
+    // their inverse) leaves Newton one correction instead of three; where an end's speed is
+    // small against the mean speed the guess is poor and the linear one is kept.
+    const double width = hi - begin, mean_speed = span / width;
+    const double speed0 = break_speed_[k], speed1 = break_speed_[k + 1];
+    if (span > 0 && speed0 > 0.5 * mean_speed && speed1 > 0.5 * mean_speed) {
+      const double u = remaining / span, u2 = u * u, u3 = u2 * u;
+      const double hermite = (2 * u3 - 3 * u2 + 1) * begin + (u3 - 2 * u2 + u) * span / speed0 +
+                             (-2 * u3 + 3 * u2) * hi + (u3 - u2) * span / speed1;
+      if (hermite > lo && hermite < hi)
+        t = hermite;
+    }
     for (int iteration = 0; iteration < 100; ++iteration) {
       const double f = integrate_speed(begin, t) - remaining;
       if (std::abs(f) <= 1e-15 * length())
@@ -225,12 +237,16 @@ private:
       breaks_.push_back(p.b);
       cumulative_length_.push_back(cumulative_length_.back() + left + right);
     }
+    break_speed_.clear();
+    for (double t : breaks_)
+      break_speed_.push_back(speed(t));
   }
 
   Vec3 q0_, q1_, t0_{0, 0, 0}, t1_{0, 0, 0};
   double a0_ = 0, a1_ = 0;
   Ogh_curve_status status_ = Ogh_curve_status::OK;
   std::vector<double> breaks_, cumulative_length_; // arc-length table, empty unless OK
+  std::vector<double> break_speed_;                // |H'| at the breaks
 };
 
 // The target curve of one highlight line crossing the region: one OGH curve, or two joined
