@@ -17,6 +17,7 @@
 //                                              (face_range: the faces within 3R of it)
 //   benchmark_detection ... --local-residual   the same with HLP::local_residual(true)
 //   benchmark_detection ... --scales N         with HLP::number_of_scales(N) (default 1)
+//   benchmark_detection --misses [--mesh NAME]  per defect not located, why (see misses_table())
 //   benchmark_detection --demo [--local-residual]  the regions of the demo's --detect mode
 //                                              (scripts/demo, part 3: the Beetle with a dent
 //                                              in its roof; 60 lines, 3 x 4 light setups)
@@ -35,6 +36,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cstdlib>
@@ -365,6 +367,98 @@ void local_table(const std::string& name, unsigned seeds)
   }
 }
 
+// Why defects are missed (--misses): per defect that no region locates, what lies around it,
+// from the detection's output only. A defect is
+//   mis-centred  if a region holds its centre vertex but reaches farther than 3R from it;
+//   folded       if not, and it turned edges within 2R of its centre sharp (over 60°: creases
+//                to the detection, which breaks the lines there and drops anomalies near them);
+//   by design    if not, and a region of the undented mesh reaches within 2R of it;
+//   unseen       otherwise.
+// Each missed defect is listed with the sharp edges near it before and after injection.
+std::size_t sharp_edges_near(const HB::Mesh& mesh, const HB::Point& centre, double radius)
+{
+  std::size_t count = 0;
+  for (auto e : edges(mesh)) {
+    const auto h = halfedge(e, mesh);
+    if (is_border_edge(h, mesh) ||
+        CGAL::squared_distance(mesh.point(source(h, mesh)), centre) > radius * radius)
+      continue;
+    const auto n = CGAL::Polygon_mesh_processing::compute_face_normal(face(h, mesh), mesh);
+    const auto m =
+        CGAL::Polygon_mesh_processing::compute_face_normal(face(opposite(h, mesh), mesh), mesh);
+    count += n * m < 0.5;
+  }
+  return count;
+}
+
+void misses_table(const std::string& name, unsigned seeds)
+{
+  HB::Mesh original;
+  if (!read_shared_mesh(name, original))
+    return;
+  const auto own = detect(original);
+  const auto own_vertices = HB::vertices_of_regions(original, own);
+  std::cout << "\n" << name << ": defects not located, and why\n";
+  std::cout << "  h/ē   defects  located  mis-centred (by design)  folded  by design  unseen\n";
+  std::ostringstream details;
+  for (double h : {1.0, 0.5, 0.2, 0.1}) {
+    std::size_t defects = 0, located = 0;
+    std::array<std::size_t, 4> causes{0, 0, 0, 0}; // mis-centred, folded, by design, unseen
+    std::size_t miscentred_by_design = 0;          // mis-centred next to an undented region
+    for (unsigned seed = 1; seed <= seeds; ++seed) {
+      HB::Mesh mesh = original;
+      const auto injected = HB::inject_defects(mesh, 4, 5.0, h, seed, [](auto) { return true; });
+      const auto found = detect(mesh);
+      const auto holds = HB::regions_of_defects(mesh, injected, found);
+      const auto is_located = HB::located_defects(mesh, injected, found);
+      for (std::size_t d = 0; d < injected.size(); ++d) {
+        ++defects;
+        if (is_located[d]) {
+          ++located;
+          continue;
+        }
+        const auto& defect = injected[d];
+        const double near = 2 * defect.radius;
+        const std::size_t before = sharp_edges_near(original, defect.centre, near),
+                          after = sharp_edges_near(mesh, defect.centre, near);
+        std::size_t design_region = std::size_t(-1);
+        for (std::size_t r = 0; r < own.size() && design_region == std::size_t(-1); ++r)
+          for (auto v : own_vertices[r])
+            if (CGAL::squared_distance(original.point(v), defect.centre) <= near * near) {
+              design_region = r;
+              break;
+            }
+        const int cause = holds[d] != std::size_t(-1)        ? 0
+                          : after > before                   ? 1
+                          : design_region != std::size_t(-1) ? 2
+                                                             : 3;
+        ++causes[std::size_t(cause)];
+        miscentred_by_design += cause == 0 && design_region != std::size_t(-1);
+        const char* why = cause == 0   ? "mis-centred"
+                          : cause == 1 ? "folded"
+                          : cause == 2 ? "by design"
+                                       : "unseen";
+        details << "  h " << h << ", seed " << seed << ", " << (defect.height < 0 ? "dent" : "bump")
+                << " " << d << ": " << why << "; sharp edges within 2R " << before << " -> "
+                << after;
+        if (holds[d] != std::size_t(-1))
+          details << "; held by region " << holds[d] + 1 << " of " << found.size() << " ["
+                  << HB::describe(found[holds[d]]) << "]";
+        if (design_region != std::size_t(-1))
+          details << "; undented region " << design_region + 1 << " within 2R ["
+                  << HB::describe(own[design_region]) << "]";
+        details << "\n";
+      }
+    }
+    std::cout << "  " << std::setw(4) << h << "  " << std::setw(7) << defects << "  "
+              << std::setw(7) << located << "  " << std::setw(11) << causes[0] << " ("
+              << std::setw(9) << miscentred_by_design << ")  " << std::setw(6) << causes[1] << "  "
+              << std::setw(9) << causes[2] << "  " << std::setw(6) << causes[3] << "\n"
+              << std::flush;
+  }
+  std::cout << details.str() << std::flush;
+}
+
 // The demo's --detect mode on the dented Beetle: every region, its rank and whether it holds
 // the roof dent; time against one compute_highlight_lines() with the same lights.
 void demo_table()
@@ -459,7 +553,7 @@ BENCHMARK(BM_detect)->Unit(benchmark::kMillisecond)->UseRealTime();
 int main(int argc, char** argv)
 {
   std::vector<char*> args;
-  bool curves_only = false, hood = true, local = false, demo = false;
+  bool curves_only = false, hood = true, local = false, demo = false, misses = false;
   unsigned seeds = 2;
   std::vector<std::string> meshes{"beetle.off",  "bunny.off",      "camelhead.off",
                                   "fandisk.off", "rocker-arm.off", "spot.off"};
@@ -472,6 +566,8 @@ int main(int argc, char** argv)
       meshes.assign(1, argv[++i]), curves_only = true, hood = false;
     else if (std::strcmp(argv[i], "--local") == 0) // the detection near each defect only
       local = true, curves_only = true, hood = false;
+    else if (std::strcmp(argv[i], "--misses") == 0) // why defects are not located
+      misses = true, curves_only = true, hood = false;
     else if (std::strcmp(argv[i], "--demo") == 0)
       demo = true, curves_only = true;
     else if (std::strcmp(argv[i], "--local-residual") == 0) // HLP::local_residual(true)
@@ -494,6 +590,9 @@ int main(int argc, char** argv)
     }
     if (demo)
       demo_table();
+    else if (misses)
+      for (const auto& name : meshes)
+        misses_table(name, seeds);
     else if (local)
       for (const auto& name : meshes)
         local_table(name, seeds);
