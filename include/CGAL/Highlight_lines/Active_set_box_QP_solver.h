@@ -39,8 +39,8 @@ public:
   {
     n_ = n;
     upper_triplets_.clear();
-    // A small problem sums P in place (the fairing of a real dent makes ~300 set_P() calls per
-    // entry of its 100-300 variables); a large one collects triplets (n² would not fit).
+    // A small problem sums P in place (a real dent's fairing, 100-300 variables, makes 3 to 7
+    // set_P() calls per entry); a large one collects triplets (n² sums would not fit).
     dense_ = n <= dense_size_limit;
     dense_values_.assign(dense_ ? n * (n + 1) / 2 : 0, 0.);
     dense_present_.assign(dense_values_.size(), 0);
