@@ -20,9 +20,16 @@
 #include <functional>
 #include <algorithm>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
+
+template <typename P>
+class Surface_mesh;
+template <typename K, typename VEF>
+class SM_index_pmap;
+class SM_Face_index;
 
 namespace Highlight_lines {
 namespace internal {
@@ -82,24 +89,50 @@ std::size_t face_index_bound(const TriangleMesh& tm, FaceIndexMap fim)
   return bound;
 }
 
+// Whether the faces are a Surface_mesh's indices read with its own index map: then a face
+// belongs to the mesh if its index is below the face array's size and it is not removed.
+template <typename TriangleMesh, typename FaceIndexMap>
+struct Has_surface_mesh_face_indices : std::false_type
+{
+};
+template <typename P>
+struct Has_surface_mesh_face_indices<Surface_mesh<P>, SM_index_pmap<P, SM_Face_index>>
+    : std::true_type
+{
+};
+
 // The region, after checking that it is a non-empty range of faces of `tm`. A face belongs
 // to `tm` if it is the face of `tm` with its index: one linear pass over the faces (a set of
-// all faces would cost O(F log F) and an allocation per face, for every region).
+// all faces would cost O(F log F) and an allocation per face, for every region), except on a
+// Surface_mesh, which answers without one (a car body has 10^6 faces, a region hundreds).
 template <typename TriangleMesh, typename FaceRange, typename FaceIndexMap>
 Face_region<TriangleMesh, FaceIndexMap> checked_region(const TriangleMesh& tm,
                                                        const FaceRange& faces_in, FaceIndexMap fim)
 {
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
   const face_descriptor null_face = boost::graph_traits<TriangleMesh>::null_face();
-  const std::size_t index_bound = face_index_bound(tm, fim);
-  std::vector<face_descriptor> face_with_index(index_bound, null_face);
-  for (face_descriptor f : faces(tm))
-    face_with_index[std::size_t(get(fim, f))] = f;
+  constexpr bool surface_mesh = Has_surface_mesh_face_indices<TriangleMesh, FaceIndexMap>::value;
+  std::size_t index_bound = 0;
+  std::vector<face_descriptor> face_with_index;
+  if constexpr (surface_mesh) {
+    index_bound = tm.num_faces(); // removed faces included
+  } else {
+    index_bound = face_index_bound(tm, fim);
+    face_with_index.assign(index_bound, null_face);
+    for (face_descriptor f : faces(tm))
+      face_with_index[std::size_t(get(fim, f))] = f;
+  }
+  auto is_face_with_index = [&](face_descriptor f, std::size_t index) {
+    if constexpr (surface_mesh)
+      return !tm.is_removed(f);
+    else
+      return face_with_index[index] == f;
+  };
   Face_region<TriangleMesh, FaceIndexMap> region(fim, index_bound);
   for (face_descriptor f : faces_in) {
     // A foreign face's index is read from the foreign face; it is only compared below.
     const std::size_t index = f == null_face ? index_bound : std::size_t(get(fim, f));
-    if (index >= index_bound || face_with_index[index] != f)
+    if (index >= index_bound || !is_face_with_index(f, index))
       throw Invalid_input(Invalid_input::Problem::FACE_NOT_IN_MESH,
                           "fair_with_highlight_lines(): the region contains a face that is not "
                           "a face of the mesh",

@@ -554,6 +554,35 @@ TEST(BadFairingInput, FaceOfAnotherPolyhedronIsRefused)
   EXPECT_FALSE(movable.empty());
 }
 
+// A Surface_mesh keeps a removed face's index until its garbage is collected; the region check
+// reads the mesh's own flags there instead of walking all faces, and must still refuse it.
+TEST(BadFairingInput, RemovedFaceOfASurfaceMeshIsRefused)
+{
+  const Dented_hood d = dented_hood(20);
+  Surface_mesh mesh = to_mesh<Surface_mesh>(d.dented);
+  std::vector<face_descriptor> region = disk_region(mesh, 1.5 * d.radius);
+  const std::set<face_descriptor> in_region(region.begin(), region.end());
+  face_descriptor removed;
+  for (face_descriptor f : faces(mesh))
+    if (!in_region.count(f))
+      removed = f; // the last face outside the region: on the hood's border
+  CGAL::Euler::remove_face(halfedge(removed, mesh), mesh);
+  ASSERT_TRUE(mesh.is_removed(removed));
+  ASSERT_TRUE(mesh.has_garbage());
+  const std::vector<Point> before = points_of(mesh);
+  region.push_back(removed);
+  try {
+    CGAL::fair_with_highlight_lines(mesh, region, hood_lights);
+    ADD_FAILURE() << "no exception";
+  } catch (const HL::Invalid_input& e) {
+    EXPECT_EQ(e.problem(), HL::Invalid_input::Problem::FACE_NOT_IN_MESH) << e.what();
+  }
+  EXPECT_EQ(points_of(mesh), before);
+  // The same region without the removed face is accepted and faired.
+  region.pop_back();
+  EXPECT_TRUE(CGAL::fair_with_highlight_lines(mesh, region, hood_lights).converged());
+}
+
 TEST(BadFairingInput, SolverFailureRollsTheMeshBack)
 {
   const Dented_hood d = dented_hood(30);
