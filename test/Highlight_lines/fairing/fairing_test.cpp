@@ -529,6 +529,21 @@ struct Failing_solver : test::Forwarding_solver
   }
 };
 
+// Fairing `region`, whose last face is not a face of `mesh`, is refused with FACE_NOT_IN_MESH
+// and leaves the mesh as it was.
+template <typename Mesh, typename FaceRange>
+void expect_face_not_in_mesh(Mesh& mesh, const FaceRange& region)
+{
+  const std::vector<Point> before = points_of(mesh);
+  try {
+    CGAL::fair_with_highlight_lines(mesh, region, hood_lights);
+    ADD_FAILURE() << "no exception";
+  } catch (const HL::Invalid_input& e) {
+    EXPECT_EQ(e.problem(), HL::Invalid_input::Problem::FACE_NOT_IN_MESH) << e.what();
+  }
+  EXPECT_EQ(points_of(mesh), before);
+}
+
 // Polyhedron_3's faces are handles: a face of another polyhedron has an index of its own
 // mesh, which must not pass for the face of this one with that index.
 TEST(BadFairingInput, FaceOfAnotherPolyhedronIsRefused)
@@ -539,14 +554,7 @@ TEST(BadFairingInput, FaceOfAnotherPolyhedronIsRefused)
   std::vector<boost::graph_traits<Polyhedron>::face_descriptor> region =
       disk_region(mesh, 1.5 * d.radius);
   region.push_back(disk_region(other, 1.5 * d.radius).front());
-  const std::vector<Point> before = points_of(mesh);
-  try {
-    CGAL::fair_with_highlight_lines(mesh, region, hood_lights);
-    ADD_FAILURE() << "no exception";
-  } catch (const HL::Invalid_input& e) {
-    EXPECT_EQ(e.problem(), HL::Invalid_input::Problem::FACE_NOT_IN_MESH) << e.what();
-  }
-  EXPECT_EQ(points_of(mesh), before);
+  expect_face_not_in_mesh(mesh, region);
   // The same region without the foreign face is accepted.
   region.pop_back();
   std::vector<boost::graph_traits<Polyhedron>::vertex_descriptor> movable;
@@ -569,15 +577,8 @@ TEST(BadFairingInput, RemovedFaceOfASurfaceMeshIsRefused)
   CGAL::Euler::remove_face(halfedge(removed, mesh), mesh);
   ASSERT_TRUE(mesh.is_removed(removed));
   ASSERT_TRUE(mesh.has_garbage());
-  const std::vector<Point> before = points_of(mesh);
   region.push_back(removed);
-  try {
-    CGAL::fair_with_highlight_lines(mesh, region, hood_lights);
-    ADD_FAILURE() << "no exception";
-  } catch (const HL::Invalid_input& e) {
-    EXPECT_EQ(e.problem(), HL::Invalid_input::Problem::FACE_NOT_IN_MESH) << e.what();
-  }
-  EXPECT_EQ(points_of(mesh), before);
+  expect_face_not_in_mesh(mesh, region);
   // The same region without the removed face is accepted and faired.
   region.pop_back();
   EXPECT_TRUE(CGAL::fair_with_highlight_lines(mesh, region, hood_lights).converged());
