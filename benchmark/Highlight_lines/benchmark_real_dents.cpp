@@ -3,7 +3,7 @@
 // same regions, moving the same vertices.
 //
 //   benchmark_real_dents [--table] [--seed N] [--centres N] [--repetitions N] [--mesh STEM]
-//                        [--dump DIR] [--jitter J] [--from-truth]
+//                        [--dump DIR] [--jitter J] [--from-truth] [--far-grid N]
 //
 // The table mode is the only mode (`--table` is accepted and is the default): one Markdown
 // table per case, then two summary tables (one row per method): over all the cases, and over
@@ -22,6 +22,10 @@
 // summaries. `--dump DIR` writes each case's dented and undented mesh
 // (DIR/<case>_input.off, DIR/<case>_truth.off) and region (DIR/<case>_region.txt, face
 // indices).
+//
+// Large meshes: `--far-grid N` adds to each case's mesh (dented and undented) a grid of 2 N²
+// triangles beyond its bounding box, far from every region: a fairing's time should not grow
+// with the mesh around the region (a car body has 10^6 faces).
 //
 // Scan-like triangulations: `--jitter J` (default 0: no jitter, the cases above bit for bit)
 // moves every vertex of each mesh tangentially, by a random vector of length up to J ē_g (ē_g
@@ -76,6 +80,7 @@
 #include "surface_diffusion_flow.h"
 
 #include <CGAL/Highlight_lines/fairing_building_blocks.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/fair.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/fair_with_highlight_lines.h>
@@ -119,7 +124,27 @@ struct Options
   std::string only_mesh, dump_dir;
   double jitter = 0; // in ē_g
   bool from_truth = false;
+  int far_grid = 0; // cells per side of the grid added far away
 };
+
+// Appends an n x n grid of triangles beyond the bounding box of `mesh` (faces and vertices get
+// the next indices: the regions stay valid).
+void add_far_grid(Mesh& mesh, int n)
+{
+  const auto box = CGAL::Polygon_mesh_processing::bbox(mesh);
+  const double size = (std::max)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), 1e-3});
+  std::vector<vertex_descriptor> grid;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j)
+      grid.push_back(mesh.add_vertex(Mesh::Point(box.xmax() + size * (1 + double(i) / n),
+                                                 box.ymin() + size * double(j) / n, box.zmax())));
+  auto at = [&](int i, int j) { return grid[std::size_t(i * (n + 1) + j)]; };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      mesh.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      mesh.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+}
 
 // One method (or the input / truth) on one case.
 struct Outcome
@@ -480,9 +505,12 @@ bool parse(int argc, char** argv, Options& options)
       options.jitter = std::stod(value());
     else if (a == "--from-truth")
       options.from_truth = true;
+    else if (a == "--far-grid")
+      options.far_grid = std::stoi(value());
     else {
       std::cerr << "usage: benchmark_real_dents [--table] [--seed N] [--centres N] "
-                   "[--repetitions N] [--mesh STEM] [--dump DIR] [--jitter J] [--from-truth]\n";
+                   "[--repetitions N] [--mesh STEM] [--dump DIR] [--jitter J] [--from-truth] "
+                   "[--far-grid N]\n";
       return false;
     }
   }
@@ -523,8 +551,13 @@ int main(int argc, char** argv)
       continue;
     }
     const auto making = std::chrono::steady_clock::now();
-    const std::vector<HB::Real_dent_case> cases =
+    std::vector<HB::Real_dent_case> cases =
         HB::make_real_dent_cases(mesh, stem, options.seed, dent_options);
+    if (options.far_grid > 0)
+      for (HB::Real_dent_case& c : cases) {
+        add_far_grid(c.input, options.far_grid);
+        add_far_grid(c.truth, options.far_grid);
+      }
     const double making_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - making).count();
     const std::size_t smooth_cases = std::size_t(
