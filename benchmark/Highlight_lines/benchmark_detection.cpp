@@ -17,6 +17,7 @@
 //                                              (face_range: the faces within 3R of it)
 //   benchmark_detection ... --local-residual   the same with HLP::local_residual(true)
 //   benchmark_detection ... --scales N         with HLP::number_of_scales(N) (default 1)
+//   benchmark_detection ... --defect-regions    each defect's region (kind, size, confidence)
 //   benchmark_detection --misses [--mesh NAME]  per defect not located, why (see misses_table())
 //   benchmark_detection --demo [--local-residual]  the regions of the demo's --detect mode
 //                                              (scripts/demo, part 3: the Beetle with a dent
@@ -137,6 +138,8 @@ double hood(double x, double y)
 bool local_residual = false;
 // --scales N: the number of detection scales of the local residual (w, 2w, ...).
 int scales = 1;
+// --defect-regions: the shared table lists the region holding each defect.
+bool list_defect_regions = false;
 
 std::vector<HB::Irregularity> detect(const HB::Mesh& mesh)
 {
@@ -200,13 +203,17 @@ void hood_curve()
 //   first      found defects ranked above every region of the same mesh that holds none;
 //   >undented  defects whose region ranks above every region found on the undented mesh
 //              (missed defects count as failures);
-//   rank       mean rank (1 = strongest) of the regions of the found defects.
+//   rank       mean rank (1 = strongest) of the regions of the found defects;
+//   faired     defects located by a region of confidence >= 0.5, which the automatic mode
+//              fairs;
+//   design faired  regions of confidence >= 0.5 holding no defect (the automatic mode would
+//              reshape the design there), summed over the seeds.
 // Time and memory: the detection on the undented mesh, as ratios to one
 // compute_highlight_lines() with the default lights (30 lines) on the same mesh.
 struct Table_row
 {
   std::size_t defects = 0, found = 0, located = 0, regions = 0, true_regions = 0, first = 0,
-              above_undented = 0, rank_sum = 0;
+              above_undented = 0, rank_sum = 0, faired = 0, design_faired = 0;
 };
 
 // Reads the shared mesh `name`; says so and returns false if it is missing.
@@ -218,6 +225,10 @@ bool read_shared_mesh(const std::string& name, HB::Mesh& mesh)
   std::cout << "\n" << name << ": not found, skipped\n";
   return false;
 }
+
+// What the automatic mode would fair: detect_and_fair_highlight_line_irregularities() fairs the
+// regions of at least its default minimum_confidence.
+constexpr double minimum_confidence = 0.5;
 
 void shared_table(const std::string& name, unsigned seeds)
 {
@@ -249,8 +260,13 @@ void shared_table(const std::string& name, unsigned seeds)
             << double(detect_bytes) / double((std::max)(model_bytes, std::size_t(1))) << " x ("
             << double(detect_bytes) / 1e6 << " MB)\n"
             << std::defaultfloat << "  undented mesh: " << own.size() << " region(s)";
-  for (const auto& r : own)
+  std::size_t own_confident = 0;
+  for (const auto& r : own) {
     std::cout << " [" << HB::describe(r) << "]";
+    own_confident += r.confidence >= minimum_confidence;
+  }
+  std::cout << "\n  of confidence >= " << minimum_confidence
+            << " (faired by the automatic mode): " << own_confident;
   // The recall a defect would get from these regions alone: the share of the vertices they
   // cover (a defect is centred on a vertex at random; the regions on the dented mesh are
   // about the same).
@@ -264,8 +280,8 @@ void shared_table(const std::string& name, unsigned seeds)
                  "misses"
               << std::defaultfloat;
   }
-  std::cout
-      << "\n  h/ē   defects  recall  located  precision  first  >undented  mean rank  regions\n";
+  std::cout << "\n  h/ē   defects  recall  located  precision  first  >undented  mean rank  regions"
+               "  faired  design faired\n";
   for (double h : {1.0, 0.5, 0.2, 0.1}) {
     Table_row row;
     for (unsigned seed = 1; seed <= seeds; ++seed) {
@@ -279,13 +295,21 @@ void shared_table(const std::string& name, unsigned seeds)
       row.true_regions += s.true_regions;
       const auto holds = HB::regions_of_defects(mesh, defects, found);
       const auto genuine = HB::genuine_regions(mesh, defects, found);
-      for (bool l : HB::located_defects(mesh, defects, found))
-        row.located += l;
+      const auto located = HB::located_defects(mesh, defects, found);
+      for (std::size_t d = 0; d < defects.size(); ++d) {
+        row.located += located[d];
+        row.faired += located[d] && found[holds[d]].confidence >= minimum_confidence;
+      }
+      for (std::size_t j = 0; j < found.size(); ++j)
+        row.design_faired += !genuine[j] && found[j].confidence >= minimum_confidence;
       for (std::size_t d = 0; d < defects.size(); ++d) {
         const std::size_t r = holds[d];
         if (r == std::size_t(-1))
           continue;
         row.rank_sum += r + 1;
+        if (list_defect_regions)
+          std::cout << "    h " << h << " seed " << seed << " defect " << d << " rank " << r + 1
+                    << " [" << HB::describe(found[r]) << "]\n";
         bool first = true;
         for (std::size_t j = 0; j < found.size(); ++j)
           first = first && (genuine[j] || HB::stronger(found[r], found[j]));
@@ -307,7 +331,9 @@ void shared_table(const std::string& name, unsigned seeds)
               << (row.defects ? double(row.above_undented) / double(row.defects) : 1.0) << "  "
               << std::setprecision(1) << std::setw(9)
               << (row.found ? double(row.rank_sum) / double(row.found) : 0.0) << "  "
-              << std::setw(7) << row.regions << std::defaultfloat << "\n"
+              << std::setw(7) << row.regions << "  " << std::setprecision(3) << std::setw(6)
+              << (row.defects ? double(row.faired) / double(row.defects) : 1.0) << "  "
+              << std::setw(13) << row.design_faired << std::defaultfloat << "\n"
               << std::flush;
   }
 }
@@ -572,6 +598,8 @@ int main(int argc, char** argv)
       demo = true, curves_only = true;
     else if (std::strcmp(argv[i], "--local-residual") == 0) // HLP::local_residual(true)
       local_residual = true;
+    else if (std::strcmp(argv[i], "--defect-regions") == 0)
+      list_defect_regions = true;
     else if (std::strcmp(argv[i], "--scales") == 0 && i + 1 < argc)
       scales = std::stoi(argv[++i]);
     else if (std::strcmp(argv[i], "--seeds") == 0 && i + 1 < argc)
