@@ -28,7 +28,10 @@ enum class Fairness_energy {
   MEAN_CURVATURE,
   /// \f$ \ell^2 \sum_{ij} c_{ij} (H_i - H_j)^2 \f$ over the edges with an end inside the
   /// region, \f$ H_i = K_i \cdot N_i \f$, \f$ c_{ij} = \frac{1}{2}(\cot\alpha_{ij} +
-  /// \cot\beta_{ij}) \f$ clamped to [0, 1], \f$ \ell^2 \f$ the area of the region: the
+  /// \cot\beta_{ij}) \f$ clamped to [0, 1], \f$ \ell^2 \f$ the area of the region (at a
+  /// vertex with a sliver or a folded triangle around it in the input, \f$ H_i \f$ is the
+  /// mean curvature of a quadric fitted to its two-ring instead: the cotangent formula there
+  /// measures the triangles, not the surface): the
   /// variation of the mean curvature (a third-order energy, beyond the paper). Zero on planes
   /// and spheres; its minimisers continue the surface's curvature across the region's border,
   /// where the Willmore energy continues only its tangent planes, so that the faired surface

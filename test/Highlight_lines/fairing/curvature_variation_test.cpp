@@ -115,6 +115,13 @@ Fit cotangent_options()
   return fit;
 }
 
+Fit degenerate_rings_options()
+{
+  Fit fit;
+  fit.method = Fit::Method::FIT_ON_DEGENERATE_RINGS;
+  return fit;
+}
+
 // h(x, y) = a x² + b x y + c y² + d x + e y + f, seen along the z axis (the frame's normal at
 // every vertex): the fitted H is -2 (a + c) at every vertex, to rounding, however jittered the
 // triangulation; the cotangent formula is off by a few percent there.
@@ -150,6 +157,60 @@ TEST(CurvatureVariation, FittedMeanCurvatureIsExactForQuadraticsOnJitteredTriang
   }
 }
 
+// The default of the fairing (FIT_ON_DEGENERATE_RINGS): the mean curvature is fitted exactly at
+// the vertices with a sliver (a corner below 5°) or a folded triangle around them, and is the
+// cotangent formula's, bit for bit, everywhere else. Where it is fitted it is much closer to the
+// surface's than the cotangent formula there (a jittered quadratic height field, its mean
+// curvature known in closed form; measured: an RMS error 0.006 and 0.009 times the cotangent
+// one's on 16 and 23 such vertices).
+TEST(CurvatureVariation, DegenerateRingsAreFittedTheOthersKeepTheCotangentFormula)
+{
+  const double a = 0.7, b = -0.4, c = 0.3;
+  const auto height = [&](double x, double y) { return a * x * x + b * x * y + c * y * y; };
+  for (const unsigned seed : {3u, 11u}) {
+    const Plain_mesh m = plain(grid(24, 1.0 / 12, -1, -1, height, 0.45, seed));
+    // The unit normals of the height field, and its H = -2 x mean curvature (up normals).
+    std::vector<Vec3> exact_normals;
+    std::vector<double> exact_H;
+    for (const Vec3& p : m.positions) {
+      const double hx = 2 * a * p[0] + b * p[1], hy = b * p[0] + 2 * c * p[1];
+      const double g = 1 + hx * hx + hy * hy;
+      exact_normals.push_back({-hx / std::sqrt(g), -hy / std::sqrt(g), 1 / std::sqrt(g)});
+      exact_H.push_back(-((1 + hy * hy) * 2 * a - 2 * hx * hy * b + (1 + hx * hx) * 2 * c) /
+                        std::pow(g, 1.5));
+    }
+    const std::vector<char> degenerate =
+        HLI::vertices_with_degenerate_rings(m.positions, m.triangles, Fit().sliver_angle);
+    const std::vector<int> energy = disk_vertices(m, 0.05, -0.1, 0.6);
+    std::vector<Vec3> hybrid_normals, cotangent_normals;
+    const auto hybrid =
+        freeze(m, energy, exact_normals, degenerate_rings_options(), hybrid_normals);
+    const auto cotangent = freeze(m, energy, exact_normals, cotangent_options(), cotangent_normals);
+    const std::vector<double> hybrid_H =
+        HLI::frozen_mean_curvatures(hybrid, m.positions, hybrid_normals);
+    const std::vector<double> cotangent_H =
+        HLI::frozen_mean_curvatures(cotangent, m.positions, cotangent_normals);
+    std::size_t fitted = 0, kept = 0;
+    double hybrid_error = 0, cotangent_error = 0;
+    for (std::size_t r = 0; r < hybrid_H.size(); ++r) {
+      const int v = hybrid.weights.energy_vertices[r];
+      ASSERT_EQ(cotangent.weights.energy_vertices[r], v);
+      ASSERT_EQ(bool(hybrid.fitted[r]), bool(degenerate[std::size_t(v)])) << "vertex " << v;
+      if (!hybrid.fitted[r]) {
+        EXPECT_EQ(hybrid_H[r], cotangent_H[r]) << "vertex " << v;
+        ++kept;
+        continue;
+      }
+      ++fitted;
+      hybrid_error += std::pow(hybrid_H[r] - exact_H[std::size_t(v)], 2);
+      cotangent_error += std::pow(cotangent_H[r] - exact_H[std::size_t(v)], 2);
+    }
+    ASSERT_GT(fitted, 5u) << "seed " << seed << ": the grid has too few degenerate rings";
+    EXPECT_GT(kept, fitted);
+    EXPECT_LT(std::sqrt(hybrid_error / cotangent_error), 0.05) << "seed " << seed;
+  }
+}
+
 // The quadratic handed to the sink is the energy with the frozen stencils: its value at random
 // displacements (to 1e-9 relative) and its gradient (central finite differences).
 TEST(CurvatureVariation, QuadraticAndGradientMatchTheEnergy)
@@ -173,7 +234,8 @@ TEST(CurvatureVariation, QuadraticAndGradientMatchTheEnergy)
     directions.push_back(dir);
   }
   const std::size_t n = directions.size();
-  for (const Fit& fit : {fit_options(false), fit_options(true), cotangent_options()}) {
+  for (const Fit& fit :
+       {fit_options(false), fit_options(true), cotangent_options(), degenerate_rings_options()}) {
     std::vector<Vec3> normals;
     const auto frozen = freeze(m, energy, all_normals, fit, normals, 0.9);
     std::vector<std::vector<double>> Q(n, std::vector<double>(n, 0.0));

@@ -164,6 +164,10 @@ public:
         report.number_of_folded_triangles += is_folded(int(f)) ? 1 : 0;
         report.number_of_sliver_triangles += smallest_angle(int(f)) < sliver_angle ? 1 : 0;
       }
+    if (options_.fairness_energy == Fairness_energy::CURVATURE_VARIATION &&
+        fit_options_.method == Mean_curvature_fit_options::Method::FIT_ON_DEGENERATE_RINGS)
+      degenerate_rings_ = vertices_with_degenerate_rings(
+          local_points(), sweeper_.local_mesh().face_vertices, fit_options_.sliver_angle);
     desired_.clear();
     make_desired_lines(report);
     // From now on only the targeted lines count (q_diff), so the next models are computed for
@@ -399,7 +403,7 @@ private:
                i < region_.vertex_neighbor_begin[std::size_t(v) + 1]; ++i)
             out.push_back(region_.vertex_neighbors[std::size_t(i)]);
         },
-        length_scale_);
+        length_scale_, fit_options_, &degenerate_rings_);
     normals.clear();
     for (int v : frozen.weights.energy_vertices)
       normals.push_back(sweeper_.vertex_normals().unit_normal(v));
@@ -444,6 +448,13 @@ private:
     if (!pattern_declared_) {
       for (const auto& pair : variable_pairs_within_three_edges(region_))
         solver_.set_P(std::size_t(pair.first), std::size_t(pair.second), 0.0);
+      if (std::find(degenerate_rings_.begin(), degenerate_rings_.end(), 1) !=
+          degenerate_rings_.end()) {
+        std::vector<Vec3> normals;
+        for_each_fitted_coupling(freeze_variation(normals), region_.variable, [this](int a, int b) {
+          solver_.set_P(std::size_t(a), std::size_t(b), 0.0);
+        });
+      }
       pattern_declared_ = true;
     }
     // q_fair: the Willmore energy with frozen weights, an exact quadratic in x.
@@ -896,6 +907,10 @@ private:
   bool last_step_raised_value_ = false;        // F rose with the last step: see solve_program()
   std::vector<char> restrained_;               // held back against a flip in the last step
   std::vector<double> applied_;                // the last step taken
+  // The curvature variation's mean curvature: fitted on the rings degenerate in the input (per
+  // local vertex), the cotangent formula elsewhere (curvature_variation_energy.h).
+  Mean_curvature_fit_options fit_options_ = default_mean_curvature_fit_options();
+  std::vector<char> degenerate_rings_;
   std::vector<char> free_steps_; // per step taken: the program's minimiser, see take_step()
   std::vector<double> last_program_step_; // the last solution inside the trust region, as solved
   // The slow tail's differences of successive solutions and steps, see accelerate_tail().

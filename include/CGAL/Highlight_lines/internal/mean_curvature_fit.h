@@ -19,6 +19,8 @@
 
 #include <CGAL/Highlight_lines/internal/vector3.h>
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -33,8 +35,13 @@ namespace internal {
 struct Mean_curvature_fit_options
 {
   enum class Method {
-    COTANGENT,  // the cotangent formula's K · N (not consistent on irregular triangulations)
-    QUADRIC_FIT // the fit above
+    COTANGENT,   // the cotangent formula's K · N (not consistent on irregular triangulations)
+    QUADRIC_FIT, // the fit above
+    // The cotangent formula where the one-ring is well shaped, the least-squares fit where it
+    // holds a sliver (a corner below `sliver_angle`) or a folded triangle: there the cotangent
+    // H is an artefact of the triangle shapes (so it is no prior either), the fit reads only
+    // the points.
+    FIT_ON_DEGENERATE_RINGS
   };
   Method method = Method::QUADRIC_FIT;
   // Points: the one-ring if it has at least `minimum_one_ring` vertices, else the two-ring.
@@ -48,6 +55,9 @@ struct Mean_curvature_fit_options
   // equal to the cotangent stencil where that one is exact (symmetric rings), and with its
   // response to the oscillations of one-ring size, which a least-squares fit damps.
   bool cotangent_prior = true;
+  // FIT_ON_DEGENERATE_RINGS: the corner angle below which a triangle is a sliver (5°, the
+  // fairing report's).
+  double sliver_angle = 5 * 3.14159265358979323846 / 180;
 };
 
 namespace fit_detail {
@@ -169,6 +179,37 @@ bool quadric_fit_stencil(int center, const std::array<double, 3>& normal,
     stencil.push_back({points[i], (g0[i] + f) / scale2});
   }
   return true;
+}
+
+// The unit normal of the least-squares plane through `center` and `points` (the eigenvector of
+// their covariance with the smallest eigenvalue), on the side of `orientation`; `orientation`
+// itself if the points do not span a plane.
+inline std::array<double, 3> plane_normal(int center, const std::vector<int>& points,
+                                          const std::vector<std::array<double, 3>>& positions,
+                                          const std::array<double, 3>& orientation)
+{
+  using namespace fit_detail;
+  const Vec3& p = positions[std::size_t(center)];
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (int j : points)
+    mean +=
+        Eigen::Vector3d(positions[std::size_t(j)][0] - p[0], positions[std::size_t(j)][1] - p[1],
+                        positions[std::size_t(j)][2] - p[2]);
+  mean /= double(points.size() + 1); // the centre is the origin
+  Eigen::Matrix3d covariance = mean * mean.transpose();
+  for (int j : points) {
+    const Eigen::Vector3d d(positions[std::size_t(j)][0] - p[0],
+                            positions[std::size_t(j)][1] - p[1],
+                            positions[std::size_t(j)][2] - p[2]);
+    covariance += (d - mean) * (d - mean).transpose();
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(covariance);
+  if (eigen.info() != Eigen::Success || !(eigen.eigenvalues()[1] > 0))
+    return orientation;
+  Eigen::Vector3d n = eigen.eigenvectors().col(0);
+  if (n.dot(Eigen::Vector3d(orientation[0], orientation[1], orientation[2])) < 0)
+    n = -n;
+  return {n[0], n[1], n[2]};
 }
 
 } // namespace internal
