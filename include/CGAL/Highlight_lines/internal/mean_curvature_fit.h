@@ -37,10 +37,10 @@ struct Mean_curvature_fit_options
   enum class Method {
     COTANGENT,   // the cotangent formula's K · N (not consistent on irregular triangulations)
     QUADRIC_FIT, // the fit above
-    // The cotangent formula where the one-ring is well shaped, the least-squares fit where it
-    // holds a sliver (a corner below `sliver_angle`) or a folded triangle: there the cotangent
-    // H is an artefact of the triangle shapes (so it is no prior either), the fit reads only
-    // the points.
+    // The cotangent formula where the one-ring is well shaped, the least-squares fit over the
+    // two-ring where it holds a sliver (a corner below `sliver_angle`) or a folded triangle:
+    // there the cotangent H is an artefact of the triangle shapes (so it is no prior either),
+    // the fit reads only the points (curvature_variation_energy.h).
     FIT_ON_DEGENERATE_RINGS
   };
   Method method = Method::QUADRIC_FIT;
