@@ -293,8 +293,11 @@ void check_fairing(Mesh& mesh, const HL::Light_setup<K>& lights, const Parameter
     return;
   }
   count(same_bits(before, coordinates(mesh)) ? "fairing: nothing moved" : "fairing: moved");
+  // The movable vertices of the input, which passed the checks: the faired mesh can leave the
+  // range of sizes the fairing accepts (a vertex 1e60 away makes the region's mean edge, and
+  // with it the steps, that large), and movable_vertices() would then refuse it.
   std::vector<Vertex> movable;
-  HL::movable_vertices(mesh, region, std::back_inserter(movable));
+  HL::movable_vertices(input, region, std::back_inserter(movable));
   const std::set<Vertex> may_move(movable.begin(), movable.end());
   const std::vector<double> after = coordinates(mesh);
   for (Vertex v : mesh.vertices()) {
