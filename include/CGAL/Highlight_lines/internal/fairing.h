@@ -162,7 +162,8 @@ public:
     for (std::size_t f = 0; f < region_.face_in_region.size(); ++f)
       if (region_.face_in_region[f]) {
         report.number_of_folded_triangles += is_folded(int(f)) ? 1 : 0;
-        report.number_of_sliver_triangles += smallest_angle(int(f)) < sliver_angle ? 1 : 0;
+        report.number_of_sliver_triangles +=
+            smallest_angle(int(f)) < fit_options_.sliver_angle ? 1 : 0;
       }
     if (options_.fairness_energy == Fairness_energy::CURVATURE_VARIATION &&
         fit_options_.method == Mean_curvature_fit_options::Method::FIT_ON_DEGENERATE_RINGS)
@@ -257,7 +258,6 @@ private:
     }
     return smallest;
   }
-  static constexpr double sliver_angle = 5 * 3.14159265358979323846 / 180;
 
   double shortest_edge(int v) const
   {
