@@ -219,6 +219,37 @@ inline std::vector<bool> located_defects(const Mesh& mesh,
   return located;
 }
 
+/// Per defect, whether the region holding its centre vertex could move all of it: every vertex
+/// within `inner` radii of its centre (moved by at least 5 % of the height at 0.8) is an inner
+/// vertex of that region (all its faces in the region, not on the border of the mesh), which a
+/// fairing of the region moves. A region centred on a defect's flank holds the defect without
+/// being able to repair its far side.
+inline std::vector<bool> covered_defects(const Mesh& mesh,
+                                         const std::vector<Injected_defect>& defects,
+                                         const std::vector<Irregularity>& found, double inner = 0.8)
+{
+  const auto holds = regions_of_defects(mesh, defects, found);
+  std::vector<bool> covered(defects.size(), false);
+  for (std::size_t d = 0; d < defects.size(); ++d) {
+    if (holds[d] == std::size_t(-1))
+      continue;
+    const std::set<face_descriptor> faces(found[holds[d]].faces.begin(),
+                                          found[holds[d]].faces.end());
+    bool all = true;
+    for (vertex_descriptor v : vertices(mesh)) {
+      if (!all)
+        break;
+      if (CGAL::squared_distance(mesh.point(v), defects[d].centre) >
+          std::pow(inner * defects[d].radius, 2))
+        continue;
+      for (auto f : CGAL::faces_around_target(halfedge(v, mesh), mesh))
+        all = all && f != boost::graph_traits<Mesh>::null_face() && faces.count(f) == 1;
+    }
+    covered[d] = all;
+  }
+  return covered;
+}
+
 /// Per region, whether it has a vertex within the radius of some defect.
 inline std::vector<bool> genuine_regions(const Mesh& mesh,
                                          const std::vector<Injected_defect>& defects,

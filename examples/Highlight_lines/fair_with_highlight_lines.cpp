@@ -14,6 +14,7 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/compute_highlight_lines.h>
 #include <CGAL/detect_highlight_line_irregularities.h>
+#include <CGAL/Highlight_lines/join_touching_irregularities.h>
 #include <CGAL/fair_with_highlight_lines.h>
 
 #include "command_line.h"
@@ -240,10 +241,14 @@ find_irregularities(const Mesh& mesh, const HL::Light_setup<K>& lights)
   CGAL::detect_highlight_line_irregularities(mesh, lights, std::back_inserter(found),
                                              HLP::number_of_offsets(4));
   std::cout << found.size() << " irregular region(s), the likeliest defects first:\n";
-  for (const auto& r : found)
-    std::cout << "  " << HL::to_string(r.kind) << ", confidence " << r.confidence << ", score "
-              << r.score << ", " << r.faces.size() << " faces around " << mesh.point(r.peak_vertex)
-              << ", seen in " << r.number_of_light_setups << " light setups\n";
+  const std::size_t shown = (std::min)(found.size(), std::size_t(5));
+  for (std::size_t i = 0; i < shown; ++i)
+    std::cout << "  " << HL::to_string(found[i].kind) << ", confidence " << found[i].confidence
+              << ", score " << found[i].score << ", " << found[i].faces.size() << " faces around "
+              << mesh.point(found[i].peak_vertex) << ", seen in " << found[i].number_of_light_setups
+              << " light setups\n";
+  if (found.size() > shown)
+    std::cout << "  and " << found.size() - shown << " more, of lower confidence x score\n";
   return found;
 }
 
@@ -287,7 +292,12 @@ int detect_and_fair(Mesh& mesh, const Options& o)
   const HL::Light_setup<K> lights = sweep_lights(mesh, o);
   std::vector<HL::Highlight_line_irregularity<Mesh>> found = find_irregularities(mesh, lights);
   // Only the likely defects are faired (as detect_and_fair_highlight_line_irregularities()
-  // does with its minimum_confidence); no region crosses a sharp edge.
+  // does with its minimum_confidence), those that touch as one; no region crosses a sharp edge.
+  const std::size_t before_joining = found.size();
+  HL::join_touching_irregularities(mesh, found, o.min_confidence);
+  if (found.size() < before_joining)
+    std::cout << "touching regions to fair joined: " << before_joining << " regions -> "
+              << found.size() << "\n";
   std::vector<HL::Highlight_line_irregularity<Mesh>> skipped;
   {
     std::vector<HL::Highlight_line_irregularity<Mesh>> kept;
@@ -295,10 +305,15 @@ int detect_and_fair(Mesh& mesh, const Options& o)
       (r.confidence >= o.min_confidence ? kept : skipped).push_back(std::move(r));
     found.swap(kept);
   }
-  for (const auto& r : skipped)
-    std::cout << "skipped (confidence " << r.confidence << " below " << o.min_confidence << ", "
-              << HL::to_string(r.kind) << ": likely design): " << r.faces.size() << " faces around "
-              << mesh.point(r.peak_vertex) << "\n";
+  // The strongest few skipped (the rest is design too, and weaker).
+  const std::size_t shown = (std::min)(skipped.size(), std::size_t(3));
+  for (std::size_t i = 0; i < shown; ++i)
+    std::cout << "skipped (confidence " << skipped[i].confidence << " below " << o.min_confidence
+              << ", " << HL::to_string(skipped[i].kind)
+              << ": likely design): " << skipped[i].faces.size() << " faces around "
+              << mesh.point(skipped[i].peak_vertex) << "\n";
+  if (skipped.size() > shown)
+    std::cout << "skipped " << skipped.size() - shown << " more of lower confidence\n";
   if (found.size() > o.max_regions) {
     found.resize(o.max_regions);
     std::cout << "the " << o.max_regions << " strongest are faired\n";

@@ -5,6 +5,7 @@
 #define CGAL_DETECT_AND_FAIR_HIGHLIGHT_LINE_IRREGULARITIES_H
 
 #include <CGAL/Highlight_lines/Irregularity_repair.h>
+#include <CGAL/Highlight_lines/join_touching_irregularities.h>
 #include <CGAL/detect_highlight_line_irregularities.h>
 #include <CGAL/fair_with_highlight_lines.h>
 
@@ -28,7 +29,9 @@ Only the regions that are most likely defects are faired: those whose `confidenc
 `minimum_confidence` (default 0.5: a compact region seen in at least half of the light setups;
 regions elongated along a feature or spread wider than a defect, `ELONGATED` and `EXTENDED`,
 fall below it). The others are reported as skipped (`Irregularity_repair::skipped`) and left
-untouched. No region found crosses a sharp edge (see `detect_highlight_line_irregularities()`),
+untouched. Regions to be faired that touch are joined and faired as one
+(`Highlight_lines::join_touching_irregularities()`): faired apart, their common border would
+stay fixed in both fairings. No region found crosses a sharp edge (see `detect_highlight_line_irregularities()`),
 so no fairing reshapes a feature line.
 
 A region whose fairing is refused (e.g. it has no movable vertex because it is too thin) or
@@ -51,8 +54,8 @@ both (a `fairing_visitor` is called for every iteration of every region), and:
     \cgalParamNEnd
   \cgalNamedParamsEnd
 
-\returns one entry per region found, in the order they were found (and faired), skipped ones
-included.
+\returns one entry per region found (regions joined as above counting as one), in the order
+they were found (and faired), skipped ones included.
 
 \throws Highlight_lines::Invalid_input for what the detection rejects (the mesh is untouched).
 Exceptions other than `Highlight_lines::Invalid_input` and `Highlight_lines::Fairing_failure`
@@ -76,6 +79,7 @@ detect_and_fair_highlight_line_irregularities(
   std::vector<HL::Highlight_line_irregularity<TriangleMesh>> found;
   detect_highlight_line_irregularities(static_cast<const TriangleMesh&>(tm), lights,
                                        std::back_inserter(found), np);
+  HL::join_touching_irregularities(static_cast<const TriangleMesh&>(tm), found, minimum_confidence);
   std::vector<HL::Irregularity_repair<TriangleMesh>> repairs;
   repairs.reserve(found.size());
   for (auto& irregularity : found) {

@@ -10,6 +10,7 @@
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/Highlight_lines/default_light_setup.h>
 #include <CGAL/Highlight_lines/fairing_building_blocks.h>
+#include <CGAL/Highlight_lines/join_touching_irregularities.h>
 #include <CGAL/detect_and_fair_highlight_line_irregularities.h>
 #include <CGAL/detect_highlight_line_irregularities.h>
 
@@ -42,23 +43,25 @@ HB::Mesh smooth_hood(unsigned seed, int n = 80)
   return test::to_mesh<HB::Mesh>(test::grid(n, 2.0 / n, -1, -1, hood, 0.3, seed));
 }
 
-std::vector<HB::Irregularity> detect(const HB::Mesh& mesh)
+// The bending measure (the default; `local_residual(false)` said), from all sides.
+std::vector<HB::Irregularity> detect_bending(const HB::Mesh& mesh)
 {
   std::vector<HB::Irregularity> found;
   CGAL::detect_highlight_line_irregularities(
-      mesh, HL::default_light_setup(mesh, HLP::number_of_lines(30)), std::back_inserter(found));
+      mesh, HL::default_light_setup(mesh, HLP::number_of_lines(30)), std::back_inserter(found),
+      HLP::local_residual(false));
   return found;
 }
 
 // The hoods are height fields under the default lights: the planes on the other sides see
 // nothing the top plane does not (their lines crowd where the hood turns away from them and
 // are not scored), so the statistical tests on hoods sweep the top plane only, six times faster.
-std::vector<HB::Irregularity> detect_from_above(const HB::Mesh& mesh)
+std::vector<HB::Irregularity> detect_bending_from_above(const HB::Mesh& mesh)
 {
   std::vector<HB::Irregularity> found;
   CGAL::detect_highlight_line_irregularities(
       mesh, HL::default_light_setup(mesh, HLP::number_of_lines(30)), std::back_inserter(found),
-      HLP::all_sides(false));
+      HLP::local_residual(HLP::all_sides(false), false));
   return found;
 }
 
@@ -135,7 +138,8 @@ Hood_tally tally_on_hoods(double height_in_edges, Detect detect)
 
 HB::Detection_score score_on_hoods(double height_in_edges)
 {
-  return tally_on_hoods(height_in_edges, [](const HB::Mesh& m) { return detect_from_above(m); })
+  return tally_on_hoods(height_in_edges,
+                        [](const HB::Mesh& m) { return detect_bending_from_above(m); })
       .score;
 }
 
@@ -330,9 +334,9 @@ TEST(AnomalyRegions, JoinNearAnomaliesDropWeakOnesAndAddAMargin)
   EXPECT_EQ(HLI::group_anomalies(faces, 3 * n, anomalies, 3, 1, 1).size(), 2u);
 }
 
-// --- Recall and precision (the curves are in benchmark_detection) ---------------------------
+// --- The bending measure on hoods and shared meshes (the curves are in benchmark_detection) ---
 
-TEST(Detection, FindsEveryDefectOfAFifthOfAnEdgeLengthAndNothingElse)
+TEST(BendingMeasure, FindsEveryDefectOfAFifthOfAnEdgeLengthAndNothingElse)
 {
   const HB::Detection_score s = score_on_hoods(0.05);
   EXPECT_EQ(s.defects, 32u);
@@ -340,7 +344,7 @@ TEST(Detection, FindsEveryDefectOfAFifthOfAnEdgeLengthAndNothingElse)
   EXPECT_EQ(s.precision(), 1.0);
 }
 
-TEST(Detection, FindsMostDefectsOfAFiftiethOfAnEdgeLength)
+TEST(BendingMeasure, FindsMostDefectsOfAFiftiethOfAnEdgeLength)
 {
   const HB::Detection_score s = score_on_hoods(0.02);
   EXPECT_GE(s.recall(), 0.9);
@@ -349,13 +353,13 @@ TEST(Detection, FindsMostDefectsOfAFiftiethOfAnEdgeLength)
 
 // The benchmark's stricter count: a region spread over the mesh holds defects, it does not
 // locate them.
-TEST(Detection, LocatesDefectsOnHoodsWhereARegionOverTheMeshDoesNot)
+TEST(BendingMeasure, LocatesDefectsOnHoodsWhereARegionOverTheMeshDoesNot)
 {
   HB::Mesh mesh = smooth_hood(3);
   const auto defects = HB::inject_defects(
       mesh, 2, 5.0, 0.2, 3, [](auto) { return true; }, 6);
   ASSERT_EQ(defects.size(), 2u);
-  const auto found = detect_from_above(mesh);
+  const auto found = detect_bending_from_above(mesh);
   const auto located = HB::located_defects(mesh, defects, found);
   EXPECT_EQ(HB::match(mesh, defects, found).found_defects, 2u);
   EXPECT_TRUE(located[0] && located[1]);
@@ -368,18 +372,18 @@ TEST(Detection, LocatesDefectsOnHoodsWhereARegionOverTheMeshDoesNot)
     EXPECT_FALSE(l);
 }
 
-TEST(Detection, HardlyAnyFalseAlarmOnSmoothHoods)
+TEST(BendingMeasure, HardlyAnyFalseAlarmOnSmoothHoods)
 {
   const HB::Detection_score s = score_on_hoods(0.0);
   EXPECT_LE(s.regions, 1u); // over 8 hoods of 12,800 triangles
 }
 
-TEST(Detection, RegionsEncloseTheirDefectWithAMargin)
+TEST(BendingMeasure, RegionsEncloseTheirDefectWithAMargin)
 {
   HB::Mesh mesh = smooth_hood(3);
   const auto defects = HB::inject_defects(
       mesh, 3, 5.0, 0.3, 3, [](auto) { return true; }, 6);
-  const auto found = detect(mesh);
+  const auto found = detect_bending(mesh);
   ASSERT_EQ(found.size(), defects.size());
   for (const auto& d : defects) {
     // The region holding the centre holds every face of the defect.
@@ -430,7 +434,7 @@ TEST(Detection, RegionsNeverCrossASharpEdge)
     ASSERT_FALSE(defects.empty());
     // The vertices of the crease: a region may reach them, never the other side; with either
     // measure.
-    for (const auto& r : detect(mesh)) {
+    for (const auto& r : detect_bending(mesh)) {
       bool left = false, right = false;
       for (auto f : r.faces)
         for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh)) {
@@ -451,14 +455,14 @@ TEST(Detection, RegionsNeverCrossASharpEdge)
   }
 }
 
-TEST(Detection, ReportsDentsAndBumpsWithFullConfidenceOnSmoothHoods)
+TEST(BendingMeasure, ReportsDentsAndBumpsWithFullConfidenceOnSmoothHoods)
 {
   std::size_t dents = 0, bumps = 0;
   for (unsigned seed = 1; seed <= 4; ++seed) {
     HB::Mesh mesh = smooth_hood(seed);
     const auto defects = HB::inject_defects(
         mesh, 3, 5.0, 0.3, seed, [](auto) { return true; }, 6);
-    const auto found = detect_from_above(mesh);
+    const auto found = detect_bending_from_above(mesh);
     const auto holds = HB::regions_of_defects(mesh, defects, found);
     for (std::size_t d = 0; d < defects.size(); ++d) {
       ASSERT_NE(holds[d], std::size_t(-1));
@@ -474,6 +478,35 @@ TEST(Detection, ReportsDentsAndBumpsWithFullConfidenceOnSmoothHoods)
   EXPECT_GT(bumps, 0u);
 }
 
+// The same hoods with the local residual (opt-in), from above: each defect's region says
+// DENT or BUMP as it is, with a confidence that the automatic mode fairs, but for the defects
+// whose side lobes chain with a neighbour's (the defects lie 6 radii apart, the lobes reach 4w =
+// 12 mean edge lengths from a defect's flanks): those look ELONGATED (measured: 11 of 12).
+TEST(LocalResidual, ReportsMostDentsAndBumpsAsSuchOnSmoothHoods)
+{
+  std::size_t defects_seen = 0, reported_as_such = 0;
+  for (unsigned seed = 1; seed <= 4; ++seed) {
+    HB::Mesh mesh = smooth_hood(seed);
+    const auto defects = HB::inject_defects(
+        mesh, 3, 5.0, 0.3, seed, [](auto) { return true; }, 6);
+    const auto found = detect_local_residual(mesh, false);
+    const auto holds = HB::regions_of_defects(mesh, defects, found);
+    for (std::size_t d = 0; d < defects.size(); ++d) {
+      ASSERT_NE(holds[d], std::size_t(-1));
+      const HB::Irregularity& r = found[holds[d]];
+      ++defects_seen;
+      const bool as_such = r.kind == (defects[d].height < 0 ? HL::Irregularity_kind::DENT
+                                                            : HL::Irregularity_kind::BUMP) &&
+                           r.confidence >= 0.5;
+      reported_as_such += as_such;
+      if (!as_such)
+        std::cout << "seed " << seed << ", defect " << d << ": " << HB::describe(r) << "\n";
+    }
+  }
+  EXPECT_EQ(defects_seen, 12u);
+  EXPECT_GE(reported_as_such, 11u);
+}
+
 bool holds(const HB::Mesh& mesh, const HB::Irregularity& r, HB::vertex_descriptor v)
 {
   for (auto f : r.faces)
@@ -484,14 +517,14 @@ bool holds(const HB::Mesh& mesh, const HB::Irregularity& r, HB::vertex_descripto
 }
 
 // The detection of the demo's --detect mode (60 lines, 3 x 4 light setups).
-TEST(Detection, TheDemoRoofDentComesFirst)
+TEST(BendingMeasure, TheDemoRoofDentComesFirst)
 {
   HB::vertex_descriptor centre;
   const HB::Mesh mesh = HB::demo_beetle(centre);
   std::vector<HB::Irregularity> found;
   CGAL::detect_highlight_line_irregularities(
       mesh, HL::default_light_setup(mesh, HLP::number_of_lines(60)), std::back_inserter(found),
-      HLP::number_of_offsets(4));
+      HLP::local_residual(HLP::number_of_offsets(4), false));
   ASSERT_FALSE(found.empty());
   EXPECT_TRUE(holds(mesh, found[0], centre)) << HB::describe(found[0]);
   EXPECT_EQ(found[0].kind, HL::Irregularity_kind::DENT);
@@ -505,7 +538,7 @@ TEST(Detection, TheDemoRoofDentComesFirst)
 // Dents and bumps 0.2 ē high anywhere on two shared CAD meshes (seeded, 2 x 4 per mesh): the
 // sweep from all sides finds most of them (benchmark_detection --shared: 0.625 and 0.75; with
 // the plane of the default lights only, 0 and 0.625). Issue 16 asks for 0.9: not reached yet.
-TEST(Detection, FindsMostSmallDefectsAnywhereOnSharedCadMeshes)
+TEST(BendingMeasure, FindsMostSmallDefectsAnywhereOnSharedCadMeshes)
 {
   for (const char* name : {"fandisk.off", "rocker-arm.off"}) {
     HB::Mesh original;
@@ -516,7 +549,7 @@ TEST(Detection, FindsMostSmallDefectsAnywhereOnSharedCadMeshes)
     for (unsigned seed = 1; seed <= 2; ++seed) {
       HB::Mesh mesh = original;
       const auto defects = HB::inject_defects(mesh, 4, 5.0, 0.2, seed, [](auto) { return true; });
-      const HB::Detection_score s = HB::match(mesh, defects, detect(mesh));
+      const HB::Detection_score s = HB::match(mesh, defects, detect_bending(mesh));
       total.defects += s.defects;
       total.found_defects += s.found_defects;
     }
@@ -840,7 +873,16 @@ TEST(Detection, ReportsProgressCanBeCancelledAndRunsInParallel)
   ASSERT_EQ(progress.size(), 6u * 3u * 2u); // 6 planes x 3 orientations x 2 offsets
   EXPECT_TRUE(std::is_sorted(progress.begin(), progress.end()));
   EXPECT_DOUBLE_EQ(progress.back(), 1.0);
-  ASSERT_EQ(found.size(), 1u);
+  ASSERT_GE(found.size(), 1u);
+  // The default is the bending measure (the local residual is opt-in).
+  std::vector<HB::Irregularity> bending;
+  CGAL::detect_highlight_line_irregularities(mesh, lights, std::back_inserter(bending),
+                                             HLP::local_residual(false));
+  ASSERT_EQ(bending.size(), found.size());
+  for (std::size_t i = 0; i < found.size(); ++i) {
+    EXPECT_EQ(face_keys(mesh, bending[i]), face_keys(mesh, found[i]));
+    EXPECT_EQ(bending[i].score, found[i].score);
+  }
   std::size_t calls = 0;
   CGAL::detect_highlight_line_irregularities(
       mesh, lights, std::back_inserter(cancelled),
@@ -851,8 +893,10 @@ TEST(Detection, ReportsProgressCanBeCancelledAndRunsInParallel)
   CGAL::detect_highlight_line_irregularities<CGAL::Parallel_tag>(mesh, lights,
                                                                  std::back_inserter(parallel));
   ASSERT_EQ(parallel.size(), found.size());
-  EXPECT_EQ(face_keys(mesh, parallel[0]), face_keys(mesh, found[0]));
-  EXPECT_DOUBLE_EQ(parallel[0].score, found[0].score);
+  for (std::size_t i = 0; i < found.size(); ++i) {
+    EXPECT_EQ(face_keys(mesh, parallel[i]), face_keys(mesh, found[i]));
+    EXPECT_DOUBLE_EQ(parallel[i].score, found[i].score);
+  }
 #endif
 }
 
@@ -1040,7 +1084,8 @@ TEST(Detection, RejectsNonFiniteCoordinates)
 
 // --- Detect and fair ----------------------------------------------------------------------
 
-TEST(DetectAndFair, RepairsEveryDefectFoundAndTouchesNothingElse)
+// Detect and fair on a hood with two defects, with either measure.
+void repair_every_defect_found_and_touch_nothing_else(bool local_residual)
 {
   const HB::Mesh undented = smooth_hood(2, 60);
   HB::Mesh mesh = undented;
@@ -1056,8 +1101,20 @@ TEST(DetectAndFair, RepairsEveryDefectFoundAndTouchesNothingElse)
     return true;
   };
   const auto repairs = CGAL::detect_and_fair_highlight_line_irregularities(
-      mesh, lights, HLP::fairing_visitor(visitor));
+      mesh, lights, HLP::local_residual(HLP::fairing_visitor(visitor), local_residual));
+  // One region per defect: the local residual finds one of the defects as two regions side by
+  // side (its side lobes peak apart), which the fairing joins (faired apart, their common
+  // border stayed fixed: 77 of the defect's 103 vertices could move, and the RMS distance to
+  // the undented hood went from 0.0074 to 0.0081, worse than found).
   ASSERT_EQ(repairs.size(), 2u);
+  for (const auto& repair : repairs) {
+    double nearest = 1e300;
+    for (const auto& d : defects)
+      nearest = (std::min)(nearest, std::sqrt(CGAL::squared_distance(
+                                        mesh.point(repair.irregularity.peak_vertex), d.centre)) /
+                                        d.radius);
+    EXPECT_LT(nearest, 3.0) << HB::describe(repair.irregularity);
+  }
   std::set<HB::vertex_descriptor> movable;
   std::size_t total_iterations = 0;
   for (const auto& repair : repairs) {
@@ -1081,6 +1138,11 @@ TEST(DetectAndFair, RepairsEveryDefectFoundAndTouchesNothingElse)
       }
     before = std::sqrt(before / double(count));
     after = std::sqrt(after / double(count));
+    std::size_t movable_in_defect = 0;
+    for (auto v : vertices(mesh))
+      if (CGAL::squared_distance(undented.point(v), d.centre) < d.radius * d.radius)
+        movable_in_defect += movable.count(v);
+    EXPECT_EQ(movable_in_defect, count);
     EXPECT_LT(after, 0.2 * before);
   }
   // Vertices that no region could move are bit-identical.
@@ -1088,6 +1150,56 @@ TEST(DetectAndFair, RepairsEveryDefectFoundAndTouchesNothingElse)
     if (movable.count(v) == 0) {
       EXPECT_EQ(mesh.point(v), dented.point(v));
     }
+}
+
+// Regions that touch are joined into the first if both reach the confidence, on either mesh
+// type; the others are left as they are.
+template <typename Mesh>
+void check_joining_of_touching_regions()
+{
+  test::Soup soup = test::grid(
+      12, 1.0, 0, 0, [](double, double) { return 0.0; }, 0.0, 1);
+  const Mesh mesh = test::to_mesh<Mesh>(soup);
+  typedef typename boost::graph_traits<Mesh>::face_descriptor face_descriptor;
+  // Faces by the x of their centroid: strips [0, 2), [2, 4) (touching), [8, 10) apart.
+  auto strip = [&](double from, double to, double confidence, double score) {
+    HL::Highlight_line_irregularity<Mesh> r;
+    for (face_descriptor f : faces(mesh)) {
+      double x = 0;
+      for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+        x += get(CGAL::vertex_point, mesh, v).x() / 3;
+      if (x >= from && x < to)
+        r.faces.push_back(f);
+    }
+    r.confidence = confidence;
+    r.score = score;
+    r.number_of_anomalies = 1;
+    return r;
+  };
+  std::vector<HL::Highlight_line_irregularity<Mesh>> regions{
+      strip(0, 2, 0.9, 3), strip(8, 10, 0.8, 2), strip(2, 4, 0.7, 1), strip(4, 6, 0.1, 1)};
+  const std::size_t faces_of_first = regions[0].faces.size() + regions[2].faces.size();
+  HL::join_touching_irregularities(mesh, regions, 0.5);
+  ASSERT_EQ(regions.size(), 3u);
+  EXPECT_EQ(regions[0].faces.size(), faces_of_first);
+  EXPECT_EQ(regions[0].score, 3.0);
+  EXPECT_EQ(regions[0].number_of_anomalies, 2u);
+  EXPECT_EQ(regions[1].score, 2.0);      // apart: left alone
+  EXPECT_EQ(regions[2].confidence, 0.1); // touches the first, but below the confidence
+}
+
+TEST(DetectAndFair, RepairsEveryDefectFoundAndTouchesNothingElse)
+{
+  for (bool local_residual : {false, true}) {
+    SCOPED_TRACE(local_residual ? "local residual" : "bending");
+    repair_every_defect_found_and_touch_nothing_else(local_residual);
+  }
+}
+
+TEST(DetectAndFair, JoinsTouchingRegionsOnEitherMeshType)
+{
+  check_joining_of_touching_regions<HB::Mesh>();
+  check_joining_of_touching_regions<test::Polyhedron>();
 }
 
 TEST(DetectAndFair, SurfaceMeshAndPolyhedronAgree)
@@ -1137,6 +1249,25 @@ TEST(DetectAndFair, FairsTheDemoRoofDentAndLeavesTheDesignAlone)
     if (movable.count(v) == 0) {
       EXPECT_EQ(mesh.point(v), dented.point(v));
     }
+  // And the whole dent could move (the local residual, opt-in, does not pass this yet: its
+  // region is centred on the dent's near flank, where the lines are displaced most, and leaves
+  // the far flank out; benchmark_detection's column "whole").
+  HB::Mesh undented;
+  std::ifstream in(std::string(HIGHLIGHT_LINES_DATA_DIR) + "/beetle.off");
+  ASSERT_TRUE(in && CGAL::IO::read_OFF(in, undented));
+  // (The dent's rim, pressed by less than a hundredth of its depth, may lie on the border.)
+  double depth = 0;
+  for (auto v : vertices(mesh))
+    depth =
+        (std::max)(depth, std::sqrt(CGAL::squared_distance(dented.point(v), undented.point(v))));
+  std::size_t dent_vertices = 0, movable_dent_vertices = 0;
+  for (auto v : vertices(mesh))
+    if (CGAL::squared_distance(dented.point(v), undented.point(v)) > CGAL::square(0.01 * depth)) {
+      ++dent_vertices;
+      movable_dent_vertices += movable.count(v);
+    }
+  EXPECT_GT(dent_vertices, 50u);
+  EXPECT_EQ(movable_dent_vertices, dent_vertices);
   HB::Mesh other = dented;
   EXPECT_THROW(CGAL::detect_and_fair_highlight_line_irregularities(
                    other, HL::default_light_setup(other), HLP::minimum_confidence(1.5)),
