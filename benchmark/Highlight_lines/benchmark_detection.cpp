@@ -32,6 +32,7 @@
 #include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
 #include <CGAL/compute_highlight_lines.h>
 #include <CGAL/detect_highlight_line_irregularities.h>
+#include <CGAL/Highlight_lines/grown_face_region.h>
 #include <CGAL/Highlight_lines/join_touching_irregularities.h>
 
 #include "../../test/Highlight_lines/model/test_meshes.h"
@@ -210,8 +211,9 @@ void hood_curve()
 //   design faired  regions of confidence >= 0.5 holding no defect (the automatic mode would
 //              reshape the design there), summed over the seeds;
 //   whole      faired defects that the region the automatic mode fairs can move whole
-//              (HB::covered_defects() after HL::join_touching_irregularities(): every vertex
-//              within 0.8 R an inner vertex of the region).
+//              (HB::covered_defects() after HL::join_touching_irregularities() and the fairing
+//              margin of detection_scale = 3 rings: every vertex within 0.8 R an inner vertex
+//              of the region; --fairing-margin N for N rings).
 // Time and memory: the detection on the undented mesh, as ratios to one
 // compute_highlight_lines() with the default lights (30 lines) on the same mesh.
 struct Table_row
@@ -233,6 +235,9 @@ bool read_shared_mesh(const std::string& name, HB::Mesh& mesh)
 // What the automatic mode would fair: detect_and_fair_highlight_line_irregularities() fairs the
 // regions of at least its default minimum_confidence.
 constexpr double minimum_confidence = 0.5;
+// The rings of faces the automatic mode adds around a region before fairing it (as
+// detect_and_fair_highlight_line_irregularities() does: detection_scale, 3, rounded up).
+int fairing_margin = 3;
 
 void shared_table(const std::string& name, unsigned seeds)
 {
@@ -303,6 +308,10 @@ void shared_table(const std::string& name, unsigned seeds)
       // As the automatic mode fairs them: touching regions of that confidence joined.
       std::vector<HB::Irregularity> joined = found;
       HL::join_touching_irregularities(mesh, joined, minimum_confidence);
+      for (auto& r : joined)
+        if (r.confidence >= minimum_confidence)
+          r.faces = HL::grown_face_region(mesh, r.faces, fairing_margin, 60.0,
+                                                    get(CGAL::vertex_point, mesh));
       const auto covered = HB::covered_defects(mesh, defects, joined);
       for (std::size_t d = 0; d < defects.size(); ++d) {
         row.located += located[d];
@@ -614,6 +623,8 @@ int main(int argc, char** argv)
       list_defect_regions = true;
     else if (std::strcmp(argv[i], "--scales") == 0 && i + 1 < argc)
       scales = std::stoi(argv[++i]);
+    else if (std::strcmp(argv[i], "--fairing-margin") == 0 && i + 1 < argc)
+      fairing_margin = std::atoi(argv[++i]);
     else if (std::strcmp(argv[i], "--seeds") == 0 && i + 1 < argc)
       seeds = unsigned(std::stoul(argv[++i]));
     else

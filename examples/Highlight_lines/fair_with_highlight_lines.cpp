@@ -14,6 +14,7 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/compute_highlight_lines.h>
 #include <CGAL/detect_highlight_line_irregularities.h>
+#include <CGAL/Highlight_lines/grown_face_region.h>
 #include <CGAL/Highlight_lines/join_touching_irregularities.h>
 #include <CGAL/fair_with_highlight_lines.h>
 
@@ -319,8 +320,11 @@ int detect_and_fair(Mesh& mesh, const Options& o)
     std::cout << "the " << o.max_regions << " strongest are faired\n";
   }
   std::vector<std::vector<face_descriptor>> regions;
+  // Each with a margin of 3 rings (the detection scale), as
+  // detect_and_fair_highlight_line_irregularities() does: a region is centred where the lines
+  // move most, often one flank of the defect, and a fairing moves only its inner vertices.
   for (const auto& r : found)
-    regions.push_back(r.faces);
+    regions.push_back(HL::grown_face_region(mesh, r.faces, 3, 60.0, get(CGAL::vertex_point, mesh)));
   const pic::Image before = region_overview::picture(mesh, lights, regions, o.width, o.height);
 
   std::size_t repaired = 0;
@@ -328,7 +332,7 @@ int detect_and_fair(Mesh& mesh, const Options& o)
     std::cout << "region " << i + 1 << "/" << found.size() << ": " << std::flush;
     try {
       const HL::Fairing_report report = CGAL::fair_with_highlight_lines(
-          mesh, found[i].faces, lights,
+          mesh, regions[i], lights,
           HLP::fairness_energy(CGAL::parameters::number_of_iterations(o.iterations), o.energy));
       ++repaired;
       std::cout << HL::to_string(report.status) << " after " << report.iterations << " iterations, "

@@ -7,7 +7,10 @@
 #include <CGAL/Highlight_lines/Fairing_report.h>
 #include <CGAL/Highlight_lines/Highlight_line_irregularity.h>
 
+#include <boost/graph/graph_traits.hpp>
+
 #include <string>
+#include <vector>
 
 namespace CGAL {
 namespace Highlight_lines {
@@ -22,8 +25,13 @@ What `detect_and_fair_highlight_line_irregularities()` did with one region it fo
 template <typename TriangleMesh>
 struct Irregularity_repair
 {
-  /// The region found, as `detect_highlight_line_irregularities()` reported it.
+  /// The region found, as `detect_highlight_line_irregularities()` reported it (joined with
+  /// the touching regions faired with it: `Highlight_lines::join_touching_irregularities()`).
   Highlight_line_irregularity<TriangleMesh> irregularity;
+  /// The faces faired: those of `irregularity` and the rings of faces around them that the
+  /// fairing margin adds (see `detect_and_fair_highlight_line_irregularities()`); empty if the
+  /// region was skipped.
+  std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> faired_faces;
   /// Whether the region was faired; if not, the mesh is exactly as it was before this region
   /// was tried, and `failure` says why.
   bool repaired = false;

@@ -10,6 +10,7 @@
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/Highlight_lines/default_light_setup.h>
 #include <CGAL/Highlight_lines/fairing_building_blocks.h>
+#include <CGAL/Highlight_lines/grown_face_region.h>
 #include <CGAL/Highlight_lines/join_touching_irregularities.h>
 #include <CGAL/detect_and_fair_highlight_line_irregularities.h>
 #include <CGAL/detect_highlight_line_irregularities.h>
@@ -1118,10 +1119,17 @@ void repair_every_defect_found_and_touch_nothing_else(bool local_residual)
   std::set<HB::vertex_descriptor> movable;
   std::size_t total_iterations = 0;
   for (const auto& repair : repairs) {
+    // The faces faired: the region and a margin of detection_scale = 3 rings around it.
+    const std::set<HB::face_descriptor> faired(repair.faired_faces.begin(),
+                                               repair.faired_faces.end());
+    EXPECT_EQ(faired.size(), repair.faired_faces.size());
+    for (auto f : repair.irregularity.faces)
+      EXPECT_EQ(faired.count(f), 1u);
+    EXPECT_GT(faired.size(), repair.irregularity.faces.size());
     EXPECT_TRUE(repair.repaired) << repair.failure;
     EXPECT_TRUE(repair.failure.empty());
     total_iterations += repair.report.iterations;
-    HL::movable_vertices(mesh, repair.irregularity.faces, std::inserter(movable, movable.end()));
+    HL::movable_vertices(mesh, repair.faired_faces, std::inserter(movable, movable.end()));
   }
   EXPECT_EQ(iterations.size(), total_iterations);
 
@@ -1202,6 +1210,47 @@ TEST(DetectAndFair, JoinsTouchingRegionsOnEitherMeshType)
   check_joining_of_touching_regions<test::Polyhedron>();
 }
 
+// The fairing margin grows a region by rings of faces, up to a sharp edge and not across it.
+TEST(DetectAndFair, TheFairingMarginStopsAtSharpEdges)
+{
+  const HB::Mesh mesh = test::to_mesh<HB::Mesh>(test::grid(80, 2.0 / 80, -1, -1, folded, 0.0, 1));
+  const double e = 2.0 / 80;
+  auto centroid_x = [&](HB::face_descriptor f) {
+    double x = 0;
+    for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+      x += mesh.point(v).x() / 3;
+    return x;
+  };
+  // A strip of faces 3 to 6 edges left of the crease at x = 0.1, 10 edges long.
+  std::vector<HB::face_descriptor> strip;
+  for (auto f : faces(mesh)) {
+    const double x = centroid_x(f);
+    double y = 0;
+    for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+      y += mesh.point(v).y() / 3;
+    if (x > 0.1 - 6 * e && x < 0.1 - 3 * e && std::abs(y) < 5 * e)
+      strip.push_back(f);
+  }
+  ASSERT_FALSE(strip.empty());
+  const auto points = get(CGAL::vertex_point, mesh);
+  // Two rings: 2 edges farther on each side, nothing else.
+  const auto two = HL::grown_face_region(mesh, strip, 2, 60.0, points);
+  double lowest = 1e300, highest = -1e300;
+  for (auto f : two) {
+    lowest = (std::min)(lowest, centroid_x(f));
+    highest = (std::max)(highest, centroid_x(f));
+  }
+  EXPECT_GT(lowest, 0.1 - 8 * e);
+  EXPECT_LT(highest, 0.1 - e);
+  EXPECT_GT(two.size(), strip.size());
+  // Ten rings reach the crease and stop there.
+  const auto ten = HL::grown_face_region(mesh, strip, 10, 60.0, points);
+  for (auto f : ten)
+    for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+      EXPECT_LT(mesh.point(v).x(), 0.1 + 0.5 * e);
+  EXPECT_GT(ten.size(), two.size());
+}
+
 TEST(DetectAndFair, SurfaceMeshAndPolyhedronAgree)
 {
   test::Soup soup = test::grid(50, 2.0 / 50, -1, -1, hood, 0.3, 6);
@@ -1238,7 +1287,7 @@ TEST(DetectAndFair, FairsTheDemoRoofDentAndLeavesTheDesignAlone)
   EXPECT_TRUE(repairs[0].repaired) << repairs[0].failure;
   EXPECT_FALSE(repairs[0].skipped);
   std::set<HB::vertex_descriptor> movable;
-  HL::movable_vertices(mesh, repairs[0].irregularity.faces, std::inserter(movable, movable.end()));
+  HL::movable_vertices(mesh, repairs[0].faired_faces, std::inserter(movable, movable.end()));
   for (std::size_t i = 1; i < repairs.size(); ++i) {
     EXPECT_TRUE(repairs[i].skipped) << HB::describe(repairs[i].irregularity);
     EXPECT_FALSE(repairs[i].repaired);

@@ -1,0 +1,115 @@
+// Copyright (c) 2026 The Highlight_lines package authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_HIGHLIGHT_LINES_GROWN_FACE_REGION_H
+#define CGAL_HIGHLIGHT_LINES_GROWN_FACE_REGION_H
+
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/properties.h>
+
+#include <cmath>
+#include <cstddef>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+namespace CGAL {
+namespace Highlight_lines {
+
+/*!
+\ingroup PkgHighlightLinesRef
+
+Returns the faces of `region` and the rings of faces around it, up to `rings` rings: the faces
+around its vertices, then around theirs, and so on, never past a vertex of a sharp edge (an
+edge whose two faces' normals are more than `sharp_edge_angle` degrees apart, the criterion of
+`Polygon_mesh_processing::detect_sharp_edges()`): such a vertex is reached, not crossed, so the
+grown region crosses no sharp edge that `region` did not. The faces of `region` come first, in
+their order.
+
+`detect_and_fair_highlight_line_irregularities()` fairs each region found grown so, by
+`detection_scale` rings: a region is centred where the highlight lines move most, often one
+flank of a defect, and a fairing moves only the inner vertices of its region.
+
+\tparam TriangleMesh a model of `FaceGraph`
+\tparam VertexPointMap a model of `ReadablePropertyMap` with
+        `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and a point of a
+        %CGAL kernel as value type
+
+\param tm the mesh
+\param region faces of `tm`, each once
+\param rings the number of rings of faces to add
+\param sharp_edge_angle in degrees
+\param vpm the points of the vertices of `tm`
+*/
+template <typename TriangleMesh, typename VertexPointMap>
+std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> grown_face_region(
+    const TriangleMesh& tm,
+    const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& region,
+    int rings, double sharp_edge_angle, VertexPointMap vpm)
+{
+  typedef boost::graph_traits<TriangleMesh> Graph_traits;
+  typedef typename Graph_traits::face_descriptor face_descriptor;
+  typedef typename Graph_traits::vertex_descriptor vertex_descriptor;
+  typedef typename boost::property_traits<VertexPointMap>::value_type Point;
+  typedef typename Kernel_traits<Point>::Kernel Kernel;
+  namespace PMP = CGAL::Polygon_mesh_processing;
+
+  const auto fim = get_initialized_face_index_map(tm);
+  const auto vim = get_initialized_vertex_index_map(tm);
+  const double pi = std::acos(-1.0);
+  const double cos_sharp = std::cos(sharp_edge_angle * pi / 180);
+  std::unordered_map<std::size_t, typename Kernel::Vector_3> normals; // by face index
+  auto normal = [&](face_descriptor f) -> const typename Kernel::Vector_3& {
+    auto it = normals.find(std::size_t(get(fim, f)));
+    if (it == normals.end())
+      it = normals
+               .emplace(std::size_t(get(fim, f)),
+                        PMP::compute_face_normal(f, tm, CGAL::parameters::vertex_point_map(vpm)))
+               .first;
+    return it->second;
+  };
+  auto on_sharp_edge = [&](vertex_descriptor v) {
+    for (auto h : halfedges_around_target(halfedge(v, tm), tm)) {
+      const face_descriptor f = face(h, tm), g = face(opposite(h, tm), tm);
+      if (f != Graph_traits::null_face() && g != Graph_traits::null_face() &&
+          CGAL::to_double(normal(f) * normal(g)) < cos_sharp)
+        return true;
+    }
+    return false;
+  };
+
+  std::vector<face_descriptor> grown = region;
+  std::unordered_set<std::size_t> in_region, reached;
+  std::vector<vertex_descriptor> front;
+  for (face_descriptor f : region)
+    in_region.insert(std::size_t(get(fim, f)));
+  for (face_descriptor f : region)
+    for (vertex_descriptor v : vertices_around_face(halfedge(f, tm), tm))
+      if (reached.insert(std::size_t(get(vim, v))).second)
+        front.push_back(v);
+  for (int ring = 0; ring < rings && !front.empty(); ++ring) {
+    std::vector<vertex_descriptor> next;
+    for (vertex_descriptor v : front) {
+      if (on_sharp_edge(v))
+        continue;
+      for (face_descriptor f : faces_around_target(halfedge(v, tm), tm)) {
+        if (f == Graph_traits::null_face() || !in_region.insert(std::size_t(get(fim, f))).second)
+          continue;
+        grown.push_back(f);
+        for (vertex_descriptor u : vertices_around_face(halfedge(f, tm), tm))
+          if (reached.insert(std::size_t(get(vim, u))).second)
+            next.push_back(u);
+      }
+    }
+    front.swap(next);
+  }
+  return grown;
+}
+
+} // namespace Highlight_lines
+} // namespace CGAL
+
+#endif // CGAL_HIGHLIGHT_LINES_GROWN_FACE_REGION_H
