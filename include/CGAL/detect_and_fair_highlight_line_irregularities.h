@@ -38,8 +38,9 @@ faces (rounded up; never across a sharp edge: `Highlight_lines::grown_face_regio
 is centred where the lines move most, often one flank of a defect, and a fairing moves only the
 inner vertices of its region (`benchmark_detection --shared --local-residual`, column "whole":
 of the 57 injected defects whose regions the local residual would fair, 28 could be moved whole
-without the margin, 48 with it). No region found crosses a sharp edge (see `detect_highlight_line_irregularities()`),
-so no fairing reshapes a feature line.
+without the margin, 48 with it). No region found crosses a sharp edge (see
+`detect_highlight_line_irregularities()`), nor does the margin, so no fairing reshapes a
+feature line.
 
 A region whose fairing is refused (e.g. it has no movable vertex because it is too thin) or
 fails is left exactly as it was, recorded with the reason, and the next region is tried.
@@ -83,11 +84,10 @@ detect_and_fair_highlight_line_irregularities(
   if (!(minimum_confidence >= 0 && minimum_confidence <= 1))
     throw HL::Invalid_input(HL::Invalid_input::Problem::INVALID_PARAMETER,
                             "minimum_confidence must be in [0, 1]");
-  // The fairing margin: as many rings as the detection scale's mean edge lengths.
-  const double scale = double(parameters::choose_parameter(
-      parameters::get_parameter(np, HL::internal_np::detection_scale), 3.0));
-  const int margin_rings = (scale >= 0 && scale <= 1000) ? int(std::ceil(scale)) : 0;
-  const double sharp_edge_angle = 60; // degrees, as the detection's
+  // The fairing margin: as many rings as the detection scale's mean edge lengths, up to the
+  // detection's sharp edges (the options are checked here as the detection checks them).
+  const HL::internal::Detection_options detection_options(np);
+  const int margin_rings = int(std::ceil(detection_options.scale));
   const auto vpm =
       parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
                                    get_const_property_map(vertex_point, tm));
@@ -110,7 +110,7 @@ detect_and_fair_highlight_line_irregularities(
     }
     repair.faired_faces =
         HL::grown_face_region(static_cast<const TriangleMesh&>(tm), repair.irregularity.faces,
-                              margin_rings, sharp_edge_angle, vpm);
+                              margin_rings, detection_options.sharp_edge_angle, vpm);
     try {
       repair.report = fair_with_highlight_lines(tm, repair.faired_faces, lights, np);
       repair.repaired = true;
