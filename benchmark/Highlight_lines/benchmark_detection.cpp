@@ -212,7 +212,7 @@ void hood_curve()
 //              reshape the design there), summed over the seeds;
 //   whole      faired defects that the region the automatic mode fairs can move whole
 //              (HB::covered_defects() after HL::join_touching_irregularities() and the fairing
-//              margin of detection_scale = 3 rings: every vertex within 0.8 R an inner vertex
+//              margin of detection_scale = 3 rings: every vertex within 0.8 R a movable vertex
 //              of the region; --fairing-margin N for N rings).
 // Time and memory: the detection on the undented mesh, as ratios to one
 // compute_highlight_lines() with the default lights (30 lines) on the same mesh.
@@ -311,7 +311,7 @@ void shared_table(const std::string& name, unsigned seeds)
       for (auto& r : joined)
         if (r.confidence >= minimum_confidence)
           r.faces = HL::grown_face_region(mesh, r.faces, fairing_margin, 60.0,
-                                                    get(CGAL::vertex_point, mesh));
+                                          get(CGAL::vertex_point, mesh));
       const auto covered = HB::covered_defects(mesh, defects, joined);
       for (std::size_t d = 0; d < defects.size(); ++d) {
         row.located += located[d];

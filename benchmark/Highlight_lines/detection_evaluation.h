@@ -8,6 +8,7 @@
 #define HIGHLIGHT_LINES_BENCHMARK_DETECTION_EVALUATION_H
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Highlight_lines/fairing_building_blocks.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Surface_mesh.h>
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 #include <iomanip>
 #include <sstream>
@@ -220,10 +222,10 @@ inline std::vector<bool> located_defects(const Mesh& mesh,
 }
 
 /// Per defect, whether the region holding its centre vertex could move all of it: every vertex
-/// within `inner` radii of its centre (moved by at least 5 % of the height at 0.8) is an inner
-/// vertex of that region (all its faces in the region, not on the border of the mesh), which a
-/// fairing of the region moves. A region centred on a defect's flank holds the defect without
-/// being able to repair its far side.
+/// within `inner` radii of its centre (moved by at least 5 % of the height at 0.8) is one of the
+/// region's movable vertices (CGAL::Highlight_lines::movable_vertices(): what a fairing of the
+/// region moves; none if the fairing refuses the region). A region centred on a defect's flank
+/// holds the defect without being able to repair its far side.
 inline std::vector<bool> covered_defects(const Mesh& mesh,
                                          const std::vector<Injected_defect>& defects,
                                          const std::vector<Irregularity>& found, double inner = 0.8)
@@ -233,18 +235,18 @@ inline std::vector<bool> covered_defects(const Mesh& mesh,
   for (std::size_t d = 0; d < defects.size(); ++d) {
     if (holds[d] == std::size_t(-1))
       continue;
-    const std::set<face_descriptor> faces(found[holds[d]].faces.begin(),
-                                          found[holds[d]].faces.end());
-    bool all = true;
-    for (vertex_descriptor v : vertices(mesh)) {
-      if (!all)
-        break;
-      if (CGAL::squared_distance(mesh.point(v), defects[d].centre) >
-          std::pow(inner * defects[d].radius, 2))
-        continue;
-      for (auto f : CGAL::faces_around_target(halfedge(v, mesh), mesh))
-        all = all && f != boost::graph_traits<Mesh>::null_face() && faces.count(f) == 1;
+    std::set<vertex_descriptor> movable;
+    try {
+      CGAL::Highlight_lines::movable_vertices(mesh, found[holds[d]].faces,
+                                              std::inserter(movable, movable.end()));
+    } catch (const CGAL::Highlight_lines::Invalid_input&) {
+      continue;
     }
+    bool all = true;
+    for (vertex_descriptor v : vertices(mesh))
+      all = all && (CGAL::squared_distance(mesh.point(v), defects[d].centre) >
+                        std::pow(inner * defects[d].radius, 2) ||
+                    movable.count(v) == 1);
     covered[d] = all;
   }
   return covered;

@@ -37,8 +37,8 @@ stay fixed in both fairings. And each is faired with a margin of `detection_scal
 faces (rounded up; never across a sharp edge: `Highlight_lines::grown_face_region()`): a region
 is centred where the lines move most, often one flank of a defect, and a fairing moves only the
 inner vertices of its region (`benchmark_detection --shared --local-residual`, column "whole":
-of the 57 injected defects whose regions the local residual would fair, 28 could be moved whole
-without the margin, 48 with it). No region found crosses a sharp edge (see
+of the 57 injected defects whose regions the local residual would fair, 22 could be moved whole
+without the margin, 44 with it). No region found crosses a sharp edge (see
 `detect_highlight_line_irregularities()`), nor does the margin, so no fairing reshapes a
 feature line.
 

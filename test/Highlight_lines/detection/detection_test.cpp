@@ -1211,23 +1211,25 @@ TEST(DetectAndFair, JoinsTouchingRegionsOnEitherMeshType)
 }
 
 // The fairing margin grows a region by rings of faces, up to a sharp edge and not across it.
-TEST(DetectAndFair, TheFairingMarginStopsAtSharpEdges)
+template <typename Mesh>
+void check_that_the_fairing_margin_stops_at_sharp_edges()
 {
-  const HB::Mesh mesh = test::to_mesh<HB::Mesh>(test::grid(80, 2.0 / 80, -1, -1, folded, 0.0, 1));
+  typedef typename boost::graph_traits<Mesh>::face_descriptor face_descriptor;
+  const Mesh mesh = test::to_mesh<Mesh>(test::grid(80, 2.0 / 80, -1, -1, folded, 0.0, 1));
   const double e = 2.0 / 80;
-  auto centroid_x = [&](HB::face_descriptor f) {
+  auto centroid_x = [&](face_descriptor f) {
     double x = 0;
     for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
-      x += mesh.point(v).x() / 3;
+      x += get(CGAL::vertex_point, mesh, v).x() / 3;
     return x;
   };
   // A strip of faces 3 to 6 edges left of the crease at x = 0.1, 10 edges long.
-  std::vector<HB::face_descriptor> strip;
-  for (auto f : faces(mesh)) {
+  std::vector<face_descriptor> strip;
+  for (face_descriptor f : faces(mesh)) {
     const double x = centroid_x(f);
     double y = 0;
     for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
-      y += mesh.point(v).y() / 3;
+      y += get(CGAL::vertex_point, mesh, v).y() / 3;
     if (x > 0.1 - 6 * e && x < 0.1 - 3 * e && std::abs(y) < 5 * e)
       strip.push_back(f);
   }
@@ -1247,8 +1249,14 @@ TEST(DetectAndFair, TheFairingMarginStopsAtSharpEdges)
   const auto ten = HL::grown_face_region(mesh, strip, 10, 60.0, points);
   for (auto f : ten)
     for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
-      EXPECT_LT(mesh.point(v).x(), 0.1 + 0.5 * e);
+      EXPECT_LT(get(CGAL::vertex_point, mesh, v).x(), 0.1 + 0.5 * e);
   EXPECT_GT(ten.size(), two.size());
+}
+
+TEST(DetectAndFair, TheFairingMarginStopsAtSharpEdges)
+{
+  check_that_the_fairing_margin_stops_at_sharp_edges<HB::Mesh>();
+  check_that_the_fairing_margin_stops_at_sharp_edges<test::Polyhedron>();
 }
 
 TEST(DetectAndFair, SurfaceMeshAndPolyhedronAgree)
