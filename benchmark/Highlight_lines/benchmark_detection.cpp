@@ -15,11 +15,11 @@
 //   benchmark_detection --mesh NAME            one shared mesh
 //   benchmark_detection --local [--mesh NAME]  the detection near each defect only
 //                                              (face_range: the faces within 3R of it)
-//   benchmark_detection ... --local-residual   the same with HLP::local_residual(true)
+//   benchmark_detection ... --bending          the same with HLP::local_residual(false)
 //   benchmark_detection ... --scales N         with HLP::number_of_scales(N) (default 1)
 //   benchmark_detection ... --defect-regions    each defect's region (kind, size, confidence)
 //   benchmark_detection --misses [--mesh NAME]  per defect not located, why (see misses_table())
-//   benchmark_detection --demo [--local-residual]  the regions of the demo's --detect mode
+//   benchmark_detection --demo [--bending]     the regions of the demo's --detect mode
 //                                              (scripts/demo, part 3: the Beetle with a dent
 //                                              in its roof; 60 lines, 3 x 4 light setups)
 //
@@ -136,8 +136,9 @@ double hood(double x, double y)
   return 0.25 * (1 - 0.35 * x * x) - 0.12 * y * y + 0.05 * x * y;
 }
 
-// --local-residual: the detection with HLP::local_residual(true) (issue 16).
-bool local_residual = false;
+// --bending: the detection with HLP::local_residual(false), the bending measure (the default
+// is the local residual, issue 16).
+bool local_residual = true;
 // --scales N: the number of detection scales of the local residual (w, 2w, ...).
 int scales = 1;
 // --defect-regions: the shared table lists the region holding each defect.
@@ -529,7 +530,7 @@ void demo_table()
                           local_residual));
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::cout << "demo beetle, roof dent" << (local_residual ? ", local residual" : "") << ": "
+  std::cout << "demo beetle, roof dent" << (local_residual ? "" : ", bending measure") << ": "
             << found.size() << " regions, " << std::fixed << std::setprecision(2) << seconds
             << " s = " << std::setprecision(1) << seconds / model_seconds
             << " x compute_highlight_lines()" << std::defaultfloat << "\n";
@@ -617,8 +618,8 @@ int main(int argc, char** argv)
       misses = true, curves_only = true, hood = false;
     else if (std::strcmp(argv[i], "--demo") == 0)
       demo = true, curves_only = true;
-    else if (std::strcmp(argv[i], "--local-residual") == 0) // HLP::local_residual(true)
-      local_residual = true;
+    else if (std::strcmp(argv[i], "--bending") == 0) // HLP::local_residual(false)
+      local_residual = false;
     else if (std::strcmp(argv[i], "--defect-regions") == 0)
       list_defect_regions = true;
     else if (std::strcmp(argv[i], "--scales") == 0 && i + 1 < argc)

@@ -47,10 +47,11 @@ const char* usage =
     "  --lines N           about N lights across the surface (default 30)\n"
     "  --orientations N    light directions in the sweep (default 3)\n"
     "  --offsets N         shifts of the lights per direction (default 2)\n"
-    "  --scale W           scale of the bending measure, in mean edge lengths (default 3)\n"
+    "  --scale W           scale of the measure, in mean edge lengths (default 3)\n"
     "  --threshold Z       robust z-score of an anomaly (default 5)\n"
-    "  --local-residual    score the lines by their sideways residual from a local fit\n"
-    "                      (opt-in, not yet the default: see the manual)\n"
+    "  --bending           score the lines by their bending against each line's statistics\n"
+    "                      (the paper's measure; default: the sideways residual from a\n"
+    "                      local fit, which locates defects on scans and CAD parts)\n"
     "  --size W H          picture size in pixels (default 1600 1000)\n"
     "  --help              this text\n";
 
@@ -63,7 +64,7 @@ struct Options
   std::string out = "irregularities";
   int lines = 30, orientations = 3, offsets = 2;
   double scale = 3, threshold = 5;
-  bool local_residual = false;
+  bool local_residual = true;
   int width = 1600, height = 1000;
 };
 
@@ -89,8 +90,8 @@ Options parse(int argc, char** argv)
       o.scale = number(i, argc, argv);
     else if (a == "--threshold")
       o.threshold = number(i, argc, argv);
-    else if (a == "--local-residual")
-      o.local_residual = true;
+    else if (a == "--bending")
+      o.local_residual = false;
     else if (a == "--size") {
       o.width = int(number(i, argc, argv));
       o.height = int(number(i, argc, argv));

@@ -43,8 +43,8 @@ struct Detection_options
   double maximum_incidence_angle = 60; // degrees
   double sharp_edge_angle = 60;        // degrees
   bool all_sides = true;
-  bool local_residual = false;
-  int scales = 1; // with local_residual: w, 2w, ...
+  bool local_residual = true; // false: the bending measure (closer to the paper)
+  int scales = 1;             // with local_residual: w, 2w, ...
 
   template <typename NamedParameters>
   explicit Detection_options(const NamedParameters& np)
@@ -224,7 +224,17 @@ positions, `s/k` apart), so that every part of the surface is crossed by highlig
 several directions. One highlight
 line model is computed per setup, with the vertex normals computed once.
 
-<b>The measure.</b> Each highlight line is resampled at a uniform arc-length step
+<b>Two measures.</b> By default (`local_residual(true)`), each line is scored by how far it
+runs sideways from the course a fit of its neighbourhood predicts, and the anomalies are
+grouped around their peaks into regions sized to the defect (see "The local residual" below).
+`local_residual(false)` scores each line by its bending against the line's own statistics and
+groups the anomalies into clusters, the measure closest to the paper's (next paragraphs). On
+the shared real meshes with injected dents and bumps, the local residual locates 0.38–0.88 of
+them at 0.2 ē and the bending measure almost none (its clusters chain over design until they
+cover half of the mesh); its regions are the ones `detect_and_fair_highlight_line_irregularities()`
+can repair (see "Measured" below).
+
+<b>The bending measure (`local_residual(false)`).</b> Each highlight line is resampled at a uniform arc-length step
 `h = w/4`, with `w = detection_scale · ē` (`ē` the mean edge length). At a sample `p(s)`, let
 `D = p(s+3w/2) - 3p(s+w/2) + 3p(s-w/2) - p(s-3w/2)` (the change of the discrete curvature
 vector over one step `w`, times `w²`) and `T` the unit chord `p(s+w/2) - p(s-w/2)`. The bending
@@ -246,7 +256,7 @@ bound and lines crowd beyond what the triangulation resolves), are not scored.
 design: anomalies within one ring of their vertices are not counted, and no region grows
 across them (a region reaches a sharp edge's vertices, never the other side).
 
-<b>The regions.</b> Each anomaly is attached to the mesh vertex nearest to it. Anomalies less
+<b>The regions (bending measure).</b> Each anomaly is attached to the mesh vertex nearest to it. Anomalies less
 than `detection_scale` edges apart form a cluster; clusters seen in fewer than a fraction
 `minimum_evidence` of the light setups that score their vertices (those of the planes they
 face within the incidence limit) are discarded as noise (a defect bends the lines of
@@ -264,10 +274,10 @@ surroundings predict on which the strongest anomaly lies, `ELONGATED` or `EXTEND
 extended regions: see `Highlight_lines::Highlight_line_irregularity::confidence`). Regions are
 written by decreasing `confidence * score`: local defects first, design last.
 
-<b>The local residual (opt-in: `local_residual(true)`, issue 16).</b> The bending is an
+<b>The local residual (the default).</b> The bending is an
 angle, bounded, and each sample is judged against its whole line: on scans whose lines bend
 everywhere no sample stands out, and the clusters chain over design features until they cover
-half of the mesh, so that a defect is "found" without being located. With `local_residual`,
+half of the mesh, so that a defect is "found" without being located. With the local residual,
 the lights of each setup are first brought closer (never farther apart) until its lines lie
 at most `w` apart on three quarters of the surface facing them (the lines lie `s/|∇d|` apart;
 `|∇d|` grows with the curvature, so the flatter parts set the spacing): a defect is only seen
@@ -312,7 +322,7 @@ above, computed on the cluster (anomalies less than `detection_scale` edges apar
 of the region's strongest anomaly, with `11w` in place of `6w` (the fit sees a defect from
 `4w` away).
 
-<b>Design is symmetric (with `local_residual`).</b> Designed shapes are mostly mirror
+<b>Design is symmetric (local residual).</b> Designed shapes are mostly mirror
 symmetric, and so is their design: a feature has its mirror image, or lies on the plane and is
 its own, however round and isolated it is (the Beetle's bump on its midplane, Spot's eyes); a
 defect breaks the symmetry by its height. The surface is mirror symmetric about one of the three
@@ -328,7 +338,7 @@ On a surface without a mirror symmetry nothing changes. A defect centred on the 
 about `ē` for the injected defects of radius `5ē`) is its own mirror image and is taken for
 design.
 
-<b>Several scales (with `local_residual`, `number_of_scales`).</b> The residual at scale `w`
+<b>Several scales (local residual, `number_of_scales`).</b> The residual at scale `w`
 sees defects of radius up to `3w/2`; wider ones move the lines over the fit's window too and
 are partly absorbed into the prediction. With `number_of_scales(n)`, the sweep is repeated at
 `2w`, ..., `2^(n-1) w` (the lines twice as far apart each time, so each sweep costs about half
@@ -339,29 +349,31 @@ sizes a defect more precisely). `Highlight_line_irregularity::scale` says at whi
 region was strongest. The `kind` of a compact region is the side of the quadric fitted to its
 surroundings (over twice its reach) on which its inner vertex farthest from the fit lies.
 
-Measured with `benchmark_detection --shared --seeds 2 --local-residual` (radius 5 ē, 2 × 4
-defects per height per shared mesh), the located recall (the region holding the defect lies
-within 3R of it) at 1 / 0.5 / 0.2 / 0.1 ē is .875/.875/.625/.625 on the beetle, .667/.333/.5/.5
-on the bunny, .375/.375/.5/.5 on the camel head, .875/.75/.375/.25 on the fandisk,
-.5/.625/.75/.875 on the rocker arm and .875/.875/.875/1 on spot (before the evidence was counted
-among the setups that scored a sample near the centre: .625/.75/.375/.625 on spot), where the
-bending measure locates 0–0.13. The defects found rank above every region of the undented mesh
-at 0.2 ē in 0.75 of the cases on the beetle, 0.875 on spot, 0.5 on the bunny (0.17 before the
-score was the contrast with the surroundings), 0.375 on the fandisk, 0.125 on the camel head
-and 0 on the rocker arm, whose tessellated blends move the lines more than a defect 0.2 ē high
-(the camel head's mirror symmetry, a scan's, is accepted but its own asymmetry, 0.21 ē, is as
-large as the defects). The fandisk's missed defects lie within 1.2–4.3 ē of a sharp edge, where
-the lines are not scored. On the bundled demo (`benchmark_detection --demo --local-residual`)
-the roof dent is the first region, a `DENT` of confidence 0.92, and the 33 design regions have
-confidence 0.0054 at most. Two scales (`--scales 2`) locate no more defects there and rank
-fewer above the undented fandisk, at 1.6 times the cost: one scale is the default. Its
-precision at 0.2 ē is lower than the bending measure's on the four meshes where both find
-regions (beetle 0.185, camel head 0.26, fandisk 0.54, rocker arm 0.31, against 0.38, 0.5, 0.8
-and 1: the undented meshes yield 4 to 34 regions), so the local residual is not the default
-yet. The denser lines make it two to three times as slow as the bending measure (3–4 s against
-1.4 s on the shared Beetle, 39k faces, 36 setups; the symmetry test takes 0.3 s of it; the
-contrast and the evidence rules add about a tenth, 4.4 s to 4.9 s, medians of three
-interleaved runs on a loaded machine, and 2 % of memory).
+<b>Measured</b> with `benchmark_detection --shared --seeds 2` (radius 5 ē, 2 × 4 defects per
+height per shared mesh; `--bending` for the bending measure): the located recall (the region
+holding the defect lies within 3R of it) at 1 / 0.5 / 0.2 / 0.1 ē is .875/.875/.625/.625 on the
+beetle, .667/.333/.5/.5 on the bunny, .375/.375/.5/.5 on the camel head, .875/.75/.375/.25 on
+the fandisk, .5/.625/.75/.875 on the rocker arm and .875/.875/.875/1 on spot, where the bending
+measure locates 0–0.13. The defects found rank above every region of the undented mesh at
+0.2 ē in 0.75 of the cases on the beetle, 0.875 on spot, 0.5 on the bunny, 0.375 on the
+fandisk, 0.125 on the camel head and 0 on the rocker arm, whose tessellated blends move the
+lines more than a defect 0.2 ē high (the camel head's mirror symmetry, a scan's, is accepted
+but its own asymmetry, 0.21 ē, is as large as the defects). The fandisk's missed defects lie
+within 1.2–4.3 ē of a sharp edge, where the lines are not scored. Regions of confidence ≥ 0.5
+(those `detect_and_fair_highlight_line_irregularities()` fairs) hold 57 of the 184 defects
+(beetle 14, bunny 6, camel head 9, fandisk 12, rocker arm 0, spot 16) and 36 design regions
+over the 48 dented meshes (camel head 24, rocker arm 6, spot 6); the undented meshes have 7
+(camel head 6, rocker arm 1). The bending measure's regions of that confidence hold no defect,
+and 11 design regions. On the bundled demo (`benchmark_detection --demo`) the roof dent is the
+first region, a `DENT` of confidence 0.92, and the 33 design regions have confidence 0.0054 at
+most. Two scales (`--scales 2`) locate no more defects there and rank fewer above the undented
+fandisk, at 1.6 times the cost: one scale is the default. Its precision at 0.2 ē (every region
+without a defect counted false) is lower than the bending measure's (beetle 0.185, camel head
+0.26, fandisk 0.54, rocker arm 0.31, against 0.38, 0.5, 0.8 and 1: the undented meshes yield 4
+to 34 regions of mostly low confidence, the bending measure's few regions are large and hold
+defects by covering half of the mesh). The denser lines make it two to three times as slow as
+the bending measure (2.5 s against 1.0 s on the shared Beetle, 39k faces, 36 setups; the
+symmetry test takes 0.3 s of it).
 
 A defect is only seen where several lines cross it: the lights' spacing and
 `number_of_offsets` set how small a defect can be found. Design features that are not sharp
@@ -397,7 +409,7 @@ and the lights together, and independent of the mesh's face order.
       \cgalParamDefault{`2`}
     \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::detection_scale}
-      \cgalParamDescription{the scale `w` of the bending measure, in mean edge lengths, in `[1, 1000]`; defects much smaller than `w` are averaged out, much larger ones look like smooth bending}
+      \cgalParamDescription{the scale `w` of the measure, in mean edge lengths, in `[1, 1000]`; defects much smaller than `w` are averaged out, much larger ones look like smooth bending}
       \cgalParamType{`double`}
       \cgalParamDefault{`3`}
     \cgalParamNEnd
@@ -407,7 +419,7 @@ and the lights together, and independent of the mesh's face order.
       \cgalParamDefault{`5`}
     \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::minimum_bending}
-      \cgalParamDescription{the bending (radians) below which no sample is an anomaly, whatever its score: keeps numerical noise on very regular meshes from counting}
+      \cgalParamDescription{the sideways offset (mean edge lengths; with `local_residual(false)`, the bending in radians) below which no sample is an anomaly, whatever its score: keeps numerical noise on very regular meshes from counting}
       \cgalParamType{`double`}
       \cgalParamDefault{`0.01`}
     \cgalParamNEnd
@@ -449,7 +461,7 @@ and the lights together, and independent of the mesh's face order.
     \cgalParamNBegin{Highlight_lines::parameters::local_residual}
       \cgalParamDescription{whether the lines are scored by their sideways residual from a local fit and the anomalies grouped around their peaks (see "The local residual" above) rather than by the bending against each line's statistics and grouped into clusters; with it, the spacing of `lights` is only an upper bound (each setup's lights are brought closer until its lines lie at most `w` apart on most of the surface), `minimum_bending` is a sideways offset in mean edge lengths and `Highlight_line_irregularity::max_bending` the largest such offset}
       \cgalParamType{`bool`}
-      \cgalParamDefault{`false`}
+      \cgalParamDefault{`true`}
     \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::number_of_scales}
       \cgalParamDescription{with `local_residual`: the number `n` of detection scales, in `[1, 4]`; the sweep is repeated at `w`, `2w`, ..., `2^(n-1) w` (each about half as costly as the one before) and each region keeps its best scale (see "Several scales" above); ignored without `local_residual`}

@@ -72,15 +72,16 @@ struct Highlight_line_irregularity
 
   /// The region: the faces within the margin of the anomalies, edge-connected.
   std::vector<face_descriptor> faces;
-  /// The strongest anomaly: how many robust standard deviations its bending lies above the
-  /// median bending of its line (the larger, the more certain and the more visible). With
-  /// `local_residual`, the region's contrast with its surroundings: per light setup that showed
-  /// it, how many robust standard deviations its strongest residual lies from the residuals of
-  /// the same setup around it (between `2w` and `6w` from its centre, not across a sharp edge),
-  /// the median over those setups (where the surroundings hold too few samples, the strongest
-  /// anomaly's score against the noise of its line).
+  /// The region's contrast with its surroundings (the larger, the more certain and the more
+  /// visible): per light setup that showed it, how many robust standard deviations its
+  /// strongest residual lies from the residuals of the same setup around it (between `2w` and
+  /// `6w` from its centre, not across a sharp edge), the median over those setups (where the
+  /// surroundings hold too few samples, the strongest anomaly's score against the noise of its
+  /// line). With `local_residual(false)`: how many robust standard deviations the strongest
+  /// anomaly's bending lies above the median bending of its line.
   double score = 0;
-  /// The largest bending measured in the region, in radians.
+  /// The largest sideways offset of a line measured in the region, in mean edge lengths (with
+  /// `local_residual(false)`: the largest bending, in radians).
   double max_bending = 0;
   /// The vertex nearest to the strongest anomaly.
   vertex_descriptor peak_vertex = boost::graph_traits<TriangleMesh>::null_vertex();
@@ -98,14 +99,14 @@ struct Highlight_line_irregularity
   /// `min(1, (2 max(b, w) / l)^2)` (small for a region elongated along a feature) and
   /// `min(1, (6w / l)^2)` (small for a region much larger than a defect), where `l` and `b`
   /// are four standard deviations of the positions of the anomalies along their two main axes
-  /// and `w` the detection scale (with `local_residual`, `11w` in place of `6w`, and on a
-  /// mirror symmetric surface times `min(1, (a/a0)^2)`, `a` the region's asymmetry and `a0`
-  /// the surface's own: symmetric regions are design). Regions are reported by decreasing
-  /// `confidence * score`.
+  /// and `w` the detection scale (with the local residual, the default, `11w` in place of
+  /// `6w`, and on a mirror symmetric surface times `min(1, (a/a0)^2)`, `a` the region's
+  /// asymmetry and `a0` the surface's own: symmetric regions are design). Regions are reported by
+  /// decreasing `confidence * score`.
   double confidence = 0;
   /// The detection scale `w` (in mean edge lengths) of the sweep that found the region: the
-  /// scale `detection_scale`, or with `local_residual` the one of its scales at which the
-  /// region was strongest.
+  /// scale `detection_scale`, or with several `number_of_scales` the one at which the region
+  /// was strongest.
   double scale = 0;
 };
 
