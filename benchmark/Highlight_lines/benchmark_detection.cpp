@@ -19,6 +19,9 @@
 //   benchmark_detection ... --scales N         with HLP::number_of_scales(N) (default 1)
 //   benchmark_detection ... --defect-regions    each defect's region (kind, size, confidence)
 //   benchmark_detection --misses [--mesh NAME]  per defect not located, why (see misses_table())
+//   benchmark_detection --repair [--mesh NAME]  what the automatic mode and PMP::fair on the same
+//                                              regions do to the defects and to the rest of the
+//                                              surface (see repair_table())
 //   benchmark_detection --demo [--bending]     the regions of the demo's --detect mode
 //                                              (scripts/demo, part 3: the Beetle with a dent
 //                                              in its roof; 60 lines, 3 x 4 light setups)
@@ -31,6 +34,8 @@
 #include <CGAL/Highlight_lines/default_light_setup.h>
 #include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
 #include <CGAL/compute_highlight_lines.h>
+#include <CGAL/Polygon_mesh_processing/fair.h>
+#include <CGAL/detect_and_fair_highlight_line_irregularities.h>
 #include <CGAL/detect_highlight_line_irregularities.h>
 #include <CGAL/Highlight_lines/grown_face_region.h>
 #include <CGAL/Highlight_lines/join_touching_irregularities.h>
@@ -509,6 +514,115 @@ void misses_table(const std::string& name, unsigned seeds)
 
 // The demo's --detect mode on the dented Beetle: every region, its rank and whether it holds
 // the roof dent; time against one compute_highlight_lines() with the same lights.
+// --repair: what the automatic mode (detect_and_fair_highlight_line_irregularities(), default
+// minimum_confidence) does to each shared mesh, against the undented mesh as the truth, and
+// what PMP::fair() does to the same regions (the regions the automatic mode fairs: confidence
+// >= 0.5, touching ones joined, grown by the fairing margin; PMP::fair on their movable
+// vertices). Per height: the injected defects whose vertices the repair moved, how many of
+// those end closer to the undented surface (RMS over the vertices within R), the median ratio
+// after / before over them, and the surface that was right (vertices farther than R from every
+// defect): how far the repair moved it, the largest distance of one of its vertices to the
+// undented surface, in ē. The undented mesh first: whatever is faired there is design.
+struct Repair_row
+{
+  std::size_t moved = 0, closer = 0;
+  std::vector<double> ratios;
+  double farthest = 0;
+  void add(const HB::Repair_outcome& o)
+  {
+    for (std::size_t d = 0; d < o.moved.size(); ++d)
+      if (o.moved[d]) {
+        ++moved;
+        closer += o.after[d] < o.before[d];
+        ratios.push_back(o.after[d] / (std::max)(o.before[d], 1e-300));
+      }
+    farthest = (std::max)(farthest, o.collateral_largest);
+  }
+  double median_ratio()
+  {
+    if (ratios.empty())
+      return 0;
+    std::sort(ratios.begin(), ratios.end());
+    return ratios[ratios.size() / 2];
+  }
+};
+
+// PMP::fair() on the regions the automatic mode would fair, one after the other.
+void pmp_fair_detected_regions(HB::Mesh& mesh)
+{
+  std::vector<HB::Irregularity> found = detect(mesh);
+  HL::join_touching_irregularities(mesh, found, minimum_confidence);
+  for (const auto& r : found) {
+    if (r.confidence < minimum_confidence)
+      continue;
+    const auto faces =
+        HL::grown_face_region(mesh, r.faces, fairing_margin, 60.0, get(CGAL::vertex_point, mesh));
+    std::vector<HB::vertex_descriptor> movable;
+    HL::movable_vertices(mesh, faces, std::back_inserter(movable));
+    CGAL::Polygon_mesh_processing::fair(mesh, movable);
+  }
+}
+
+void repair_table(const std::string& name, unsigned seeds)
+{
+  HB::Mesh original;
+  if (!read_shared_mesh(name, original))
+    return;
+  const double e = HB::mean_edge_length(original);
+  auto repair = [](HB::Mesh& mesh, std::size_t& faired) {
+    const auto repairs = CGAL::detect_and_fair_highlight_line_irregularities(
+        mesh, HL::default_light_setup(mesh, HLP::number_of_lines(30)),
+        HLP::number_of_scales(HLP::local_residual(local_residual), scales));
+    for (const auto& r : repairs)
+      faired += r.repaired;
+  };
+  {
+    HB::Mesh mesh = original;
+    std::size_t faired = 0;
+    repair(mesh, faired);
+    const HB::Repair_outcome o = HB::repair_outcome(original, original, mesh, {});
+    std::cout << "\n"
+              << name << ", undented: " << faired
+              << " region(s) faired, the surface moved by up to " << std::setprecision(3)
+              << o.collateral_largest / e << " ē\n";
+  }
+  std::cout << "  h/ē  defects  regions faired | ours: moved  closer  median after/before  "
+               "right surface moved up to (ē) | PMP::fair: moved  closer  median  up to (ē)\n";
+  Repair_row all_ours, all_pmp;
+  for (double h : {1.0, 0.5, 0.2, 0.1}) {
+    std::size_t defects = 0, faired = 0;
+    Repair_row ours, pmp;
+    for (unsigned seed = 1; seed <= seeds; ++seed) {
+      HB::Mesh mesh = original;
+      const auto injected = HB::inject_defects(mesh, 4, 5.0, h, seed, [](auto) { return true; });
+      const HB::Mesh dented = mesh;
+      HB::Mesh by_pmp = mesh;
+      repair(mesh, faired);
+      pmp_fair_detected_regions(by_pmp);
+      defects += injected.size();
+      ours.add(HB::repair_outcome(original, dented, mesh, injected));
+      pmp.add(HB::repair_outcome(original, dented, by_pmp, injected));
+    }
+    std::cout << std::setprecision(3) << std::setw(5) << h << std::setw(9) << defects
+              << std::setw(16) << faired << std::setw(14) << ours.moved << std::setw(8)
+              << ours.closer << std::setw(21) << ours.median_ratio() << std::setw(31)
+              << ours.farthest / e << std::setw(18) << pmp.moved << std::setw(8) << pmp.closer
+              << std::setw(8) << pmp.median_ratio() << std::setw(11) << pmp.farthest / e << "\n";
+    for (Repair_row* row : {&ours, &pmp}) {
+      Repair_row& all = row == &ours ? all_ours : all_pmp;
+      all.moved += row->moved;
+      all.closer += row->closer;
+      all.ratios.insert(all.ratios.end(), row->ratios.begin(), row->ratios.end());
+      all.farthest = (std::max)(all.farthest, row->farthest);
+    }
+  }
+  std::cout << "  all heights: ours " << all_ours.closer << " of " << all_ours.moved
+            << " moved closer, median " << all_ours.median_ratio() << ", right surface up to "
+            << all_ours.farthest / e << " ē; PMP::fair " << all_pmp.closer << " of "
+            << all_pmp.moved << ", median " << all_pmp.median_ratio() << ", up to "
+            << all_pmp.farthest / e << " ē\n";
+}
+
 void demo_table()
 {
   HB::vertex_descriptor centre;
@@ -601,7 +715,8 @@ BENCHMARK(BM_detect)->Unit(benchmark::kMillisecond)->UseRealTime();
 int main(int argc, char** argv)
 {
   std::vector<char*> args;
-  bool curves_only = false, hood = true, local = false, demo = false, misses = false;
+  bool curves_only = false, hood = true, local = false, demo = false, misses = false,
+       repair = false;
   unsigned seeds = 2;
   std::vector<std::string> meshes{"beetle.off",  "bunny.off",      "camelhead.off",
                                   "fandisk.off", "rocker-arm.off", "spot.off"};
@@ -616,6 +731,8 @@ int main(int argc, char** argv)
       local = true, curves_only = true, hood = false;
     else if (std::strcmp(argv[i], "--misses") == 0) // why defects are not located
       misses = true, curves_only = true, hood = false;
+    else if (std::strcmp(argv[i], "--repair") == 0) // what the automatic mode does
+      repair = true, curves_only = true, hood = false;
     else if (std::strcmp(argv[i], "--demo") == 0)
       demo = true, curves_only = true;
     else if (std::strcmp(argv[i], "--bending") == 0) // HLP::local_residual(false)
@@ -645,6 +762,9 @@ int main(int argc, char** argv)
     else if (misses)
       for (const auto& name : meshes)
         misses_table(name, seeds);
+    else if (repair)
+      for (const auto& name : meshes)
+        repair_table(name, seeds);
     else if (local)
       for (const auto& name : meshes)
         local_table(name, seeds);

@@ -7,6 +7,9 @@
 #ifndef HIGHLIGHT_LINES_BENCHMARK_DETECTION_EVALUATION_H
 #define HIGHLIGHT_LINES_BENCHMARK_DETECTION_EVALUATION_H
 
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Highlight_lines/fairing_building_blocks.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
@@ -298,6 +301,59 @@ inline Mesh demo_beetle(vertex_descriptor& centre)
   for (const auto& m : moved)
     mesh.point(m.first) = m.second;
   return mesh;
+}
+
+/// What a repair did to the injected defects and to the rest of the surface, measured against
+/// the undented surface (the truth): distances of vertices to it, in mesh units.
+struct Repair_outcome
+{
+  /// Per defect: the RMS distance of the vertices within its radius to the undented surface,
+  /// dented and after the repair; and whether the repair moved any of them.
+  std::vector<double> before, after;
+  std::vector<bool> moved;
+  /// The vertices farther than a radius from every defect (surface that was right): how many
+  /// the repair moved, and the largest distance of one of them to the undented surface after.
+  std::size_t collateral_moved = 0;
+  double collateral_largest = 0;
+};
+
+/// Compares `dented` and `repaired` (the same mesh, vertex for vertex) with `undented`.
+inline Repair_outcome repair_outcome(const Mesh& undented, const Mesh& dented, const Mesh& repaired,
+                                     const std::vector<Injected_defect>& defects)
+{
+  typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>> Tree;
+  Tree tree(faces(undented).first, faces(undented).second, undented);
+  tree.accelerate_distance_queries();
+  Repair_outcome outcome;
+  std::vector<double> sum_before(defects.size(), 0), sum_after(defects.size(), 0);
+  std::vector<std::size_t> count(defects.size(), 0);
+  outcome.moved.assign(defects.size(), false);
+  for (vertex_descriptor v : vertices(undented)) {
+    const bool moved = dented.point(v) != repaired.point(v);
+    bool near_a_defect = false;
+    for (std::size_t d = 0; d < defects.size(); ++d)
+      if (CGAL::squared_distance(undented.point(v), defects[d].centre) <
+          CGAL::square(defects[d].radius)) {
+        near_a_defect = true;
+        sum_before[d] += tree.squared_distance(dented.point(v));
+        sum_after[d] += tree.squared_distance(repaired.point(v));
+        ++count[d];
+        if (moved)
+          outcome.moved[d] = true;
+      }
+    if (!near_a_defect && moved) {
+      ++outcome.collateral_moved;
+      outcome.collateral_largest = (std::max)(outcome.collateral_largest,
+                                              std::sqrt(tree.squared_distance(repaired.point(v))));
+    }
+  }
+  for (std::size_t d = 0; d < defects.size(); ++d) {
+    const double n = double((std::max)(count[d], std::size_t(1)));
+    outcome.before.push_back(std::sqrt(sum_before[d] / n));
+    outcome.after.push_back(std::sqrt(sum_after[d] / n));
+  }
+  return outcome;
 }
 
 } // namespace Highlight_lines_benchmark

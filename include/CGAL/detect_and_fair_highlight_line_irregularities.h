@@ -36,14 +36,22 @@ untouched. Regions to be faired that touch are joined and faired as one
 stay fixed in both fairings. And each is faired with a margin of `detection_scale` rings of
 faces (rounded up; never across a sharp edge: `Highlight_lines::grown_face_region()`): a region
 is centred where the lines move most, often one flank of a defect, and a fairing moves only the
-inner vertices of its region (`benchmark_detection --shared --local-residual`, column "whole":
-of the 57 injected defects whose regions the local residual would fair, 22 could be moved whole
-without the margin, 44 with it). No region found crosses a sharp edge (see
+inner vertices of its region (`benchmark_detection --shared`, column "whole": of the 57
+injected defects whose regions the local residual would fair, 22 could be moved whole without
+the margin, 44 with it). No region found crosses a sharp edge (see
 `detect_highlight_line_irregularities()`), nor does the margin, so no fairing reshapes a
 feature line.
 
 A region whose fairing is refused (e.g. it has no movable vertex because it is too thin) or
 fails is left exactly as it was, recorded with the reason, and the next region is tried.
+
+<b>Not yet a reliable repair.</b> Measured against the undented surface on the shared real
+meshes with injected dents and bumps (`benchmark_detection --repair`, see the manual), 7 of
+the 86 defects whose vertices this function moved ended closer to the undented surface, and
+it moved the surface away from the defects by up to 2.8–6.5 mean edge lengths (with
+`Polygon_mesh_processing::fair()` on the same regions, 5 of 86): the regions found are
+placed and sized for seeing a defect, not for fairing it. Check each repair (its
+`faired_faces`) before keeping it.
 
 \tparam TriangleMesh a model of `MutableFaceGraph` whose faces are triangles
 \tparam GeomTraits a model of `Kernel`

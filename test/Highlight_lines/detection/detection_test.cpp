@@ -1353,6 +1353,20 @@ void fair_the_demo_roof_dent_and_leave_the_design_alone(bool local_residual)
     }
   EXPECT_GT(dent_vertices, 50u);
   EXPECT_EQ(movable_dent_vertices, dent_vertices);
+  // And the roof ends much closer to the undented roof than the dent left it (RMS distance to
+  // the undented surface of the vertices within the dent's radius; measured: 0.22 of the dent's
+  // with the bending measure, 0.055 with the local residual).
+  HB::Injected_defect dent;
+  dent.centre = undented.point(centre);
+  dent.centre_vertex = centre;
+  for (auto v : vertices(mesh))
+    if (CGAL::squared_distance(dented.point(v), undented.point(v)) > CGAL::square(0.01 * depth))
+      dent.radius = (std::max)(dent.radius,
+                               std::sqrt(CGAL::squared_distance(undented.point(v), dent.centre)));
+  const HB::Repair_outcome outcome = HB::repair_outcome(undented, dented, mesh, {dent});
+  std::cout << "roof dent RMS to the undented surface: " << outcome.before[0] << " -> "
+            << outcome.after[0] << "\n";
+  EXPECT_LT(outcome.after[0], 0.4 * outcome.before[0]);
 }
 
 TEST(DetectAndFair, RecordsRegionsThatCannotBeFairedAndGoesOn)
