@@ -4,6 +4,7 @@
 #ifndef CGAL_HIGHLIGHT_LINES_GROWN_FACE_REGION_H
 #define CGAL_HIGHLIGHT_LINES_GROWN_FACE_REGION_H
 
+#include <CGAL/Highlight_lines/Invalid_input.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -43,6 +44,9 @@ flank of a defect, and a fairing moves only the inner vertices of its region.
 \param rings the number of rings of faces to add
 \param sharp_edge_angle in degrees
 \param vpm the points of the vertices of `tm`
+
+\throws Highlight_lines::Invalid_input (`INVALID_PARAMETER`) if `rings` is negative or
+`sharp_edge_angle` is not in `(0, 180]`.
 */
 template <typename TriangleMesh, typename VertexPointMap>
 std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> grown_face_region(
@@ -57,6 +61,12 @@ std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> grown_f
   typedef typename Kernel_traits<Point>::Kernel Kernel;
   namespace PMP = CGAL::Polygon_mesh_processing;
 
+  if (rings < 0)
+    throw Invalid_input(Invalid_input::Problem::INVALID_PARAMETER,
+                        "grown_face_region: rings must not be negative");
+  if (!(sharp_edge_angle > 0 && sharp_edge_angle <= 180))
+    throw Invalid_input(Invalid_input::Problem::INVALID_PARAMETER,
+                        "grown_face_region: sharp_edge_angle must be in (0, 180] degrees");
   const auto fim = get_initialized_face_index_map(tm);
   const auto vim = get_initialized_vertex_index_map(tm);
   const double pi = std::acos(-1.0);

@@ -5,6 +5,7 @@
 #define CGAL_HIGHLIGHT_LINES_JOIN_TOUCHING_IRREGULARITIES_H
 
 #include <CGAL/Highlight_lines/Highlight_line_irregularity.h>
+#include <CGAL/Highlight_lines/Invalid_input.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
@@ -41,13 +42,19 @@ them), the sum of their `number_of_anomalies` and `number_of_lines`, the largest
 
 \param tm the mesh the regions were found on
 \param irregularities the regions, as `detect_highlight_line_irregularities()` wrote them
-\param minimum_confidence the confidence below which a region is left alone
+\param minimum_confidence the confidence below which a region is left alone, in `[0, 1]`
+
+\throws Highlight_lines::Invalid_input (`INVALID_PARAMETER`) if `minimum_confidence` is not in
+`[0, 1]`; `irregularities` is then left as it was.
 */
 template <typename TriangleMesh>
 void join_touching_irregularities(
     const TriangleMesh& tm, std::vector<Highlight_line_irregularity<TriangleMesh>>& irregularities,
     double minimum_confidence)
 {
+  if (!(minimum_confidence >= 0 && minimum_confidence <= 1))
+    throw Invalid_input(Invalid_input::Problem::INVALID_PARAMETER,
+                        "join_touching_irregularities: minimum_confidence must be in [0, 1]");
   const std::size_t n = irregularities.size();
   std::vector<std::size_t> first(n); // union-find; a group's root is its first region
   std::iota(first.begin(), first.end(), std::size_t(0));

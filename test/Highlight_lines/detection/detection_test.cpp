@@ -21,6 +21,7 @@
 #include <array>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <cmath>
 #include <map>
 #include <random>
@@ -456,25 +457,34 @@ TEST(Detection, RegionsNeverCrossASharpEdge)
   }
 }
 
-TEST(BendingMeasure, ReportsDentsAndBumpsWithFullConfidenceOnSmoothHoods)
+// On four seeded smooth hoods with three defects 0.3 ē high, 6 radii apart: `check(defect,
+// region)` for each defect and the region `detect` found holding it (which must exist).
+template <typename Detect, typename Check>
+void for_each_defect_region_on_hoods(Detect detect, Check check)
 {
-  std::size_t dents = 0, bumps = 0;
   for (unsigned seed = 1; seed <= 4; ++seed) {
     HB::Mesh mesh = smooth_hood(seed);
     const auto defects = HB::inject_defects(
         mesh, 3, 5.0, 0.3, seed, [](auto) { return true; }, 6);
-    const auto found = detect_bending_from_above(mesh);
+    const auto found = detect(mesh);
     const auto holds = HB::regions_of_defects(mesh, defects, found);
     for (std::size_t d = 0; d < defects.size(); ++d) {
       ASSERT_NE(holds[d], std::size_t(-1));
-      const HB::Irregularity& r = found[holds[d]];
-      EXPECT_EQ(r.kind,
-                defects[d].height < 0 ? HL::Irregularity_kind::DENT : HL::Irregularity_kind::BUMP)
-          << HB::describe(r);
-      EXPECT_GE(r.confidence, 0.8) << HB::describe(r);
-      (defects[d].height < 0 ? dents : bumps) += 1;
+      check(defects[d], found[holds[d]]);
     }
   }
+}
+
+TEST(BendingMeasure, ReportsDentsAndBumpsWithFullConfidenceOnSmoothHoods)
+{
+  std::size_t dents = 0, bumps = 0;
+  for_each_defect_region_on_hoods(detect_bending_from_above, [&](const HB::Injected_defect& defect,
+                                                                 const HB::Irregularity& r) {
+    EXPECT_EQ(r.kind, defect.height < 0 ? HL::Irregularity_kind::DENT : HL::Irregularity_kind::BUMP)
+        << HB::describe(r);
+    EXPECT_GE(r.confidence, 0.8) << HB::describe(r);
+    (defect.height < 0 ? dents : bumps) += 1;
+  });
   EXPECT_GT(dents, 0u);
   EXPECT_GT(bumps, 0u);
 }
@@ -486,24 +496,17 @@ TEST(BendingMeasure, ReportsDentsAndBumpsWithFullConfidenceOnSmoothHoods)
 TEST(LocalResidual, ReportsMostDentsAndBumpsAsSuchOnSmoothHoods)
 {
   std::size_t defects_seen = 0, reported_as_such = 0;
-  for (unsigned seed = 1; seed <= 4; ++seed) {
-    HB::Mesh mesh = smooth_hood(seed);
-    const auto defects = HB::inject_defects(
-        mesh, 3, 5.0, 0.3, seed, [](auto) { return true; }, 6);
-    const auto found = detect_local_residual(mesh, false);
-    const auto holds = HB::regions_of_defects(mesh, defects, found);
-    for (std::size_t d = 0; d < defects.size(); ++d) {
-      ASSERT_NE(holds[d], std::size_t(-1));
-      const HB::Irregularity& r = found[holds[d]];
-      ++defects_seen;
-      const bool as_such = r.kind == (defects[d].height < 0 ? HL::Irregularity_kind::DENT
-                                                            : HL::Irregularity_kind::BUMP) &&
-                           r.confidence >= 0.5;
-      reported_as_such += as_such;
-      if (!as_such)
-        std::cout << "seed " << seed << ", defect " << d << ": " << HB::describe(r) << "\n";
-    }
-  }
+  for_each_defect_region_on_hoods(
+      [](const HB::Mesh& mesh) { return detect_local_residual(mesh, false); },
+      [&](const HB::Injected_defect& defect, const HB::Irregularity& r) {
+        ++defects_seen;
+        const bool as_such = r.kind == (defect.height < 0 ? HL::Irregularity_kind::DENT
+                                                          : HL::Irregularity_kind::BUMP) &&
+                             r.confidence >= 0.5;
+        reported_as_such += as_such;
+        if (!as_such)
+          std::cout << "not reported as such: " << HB::describe(r) << "\n";
+      });
   EXPECT_EQ(defects_seen, 12u);
   EXPECT_GE(reported_as_such, 11u);
 }
@@ -1198,6 +1201,12 @@ void check_joining_of_touching_regions()
   EXPECT_EQ(regions[0].number_of_anomalies, 2u);
   EXPECT_EQ(regions[1].score, 2.0);      // apart: left alone
   EXPECT_EQ(regions[2].confidence, 0.1); // touches the first, but below the confidence
+  // A confidence out of [0, 1] is refused, the regions left as they were.
+  for (double wrong : {-0.1, 1.5, std::numeric_limits<double>::quiet_NaN()}) {
+    EXPECT_THROW(HL::join_touching_irregularities(mesh, regions, wrong), HL::Invalid_input);
+    ASSERT_EQ(regions.size(), 3u);
+    EXPECT_EQ(regions[0].faces.size(), faces_of_first);
+  }
 }
 
 TEST(DetectAndFair, RepairsEveryDefectFoundAndTouchesNothingElse)
@@ -1255,6 +1264,10 @@ void check_that_the_fairing_margin_stops_at_sharp_edges()
     for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
       EXPECT_LT(get(CGAL::vertex_point, mesh, v).x(), 0.1 + 0.5 * e);
   EXPECT_GT(ten.size(), two.size());
+  // Negative rings and sharp edge angles out of (0, 180] are refused.
+  EXPECT_THROW(HL::grown_face_region(mesh, strip, -1, 60.0, points), HL::Invalid_input);
+  for (double wrong : {0.0, -30.0, 181.0, std::numeric_limits<double>::quiet_NaN()})
+    EXPECT_THROW(HL::grown_face_region(mesh, strip, 2, wrong, points), HL::Invalid_input);
 }
 
 TEST(DetectAndFair, TheFairingMarginStopsAtSharpEdges)
