@@ -21,7 +21,9 @@
 //   benchmark_detection --misses [--mesh NAME]  per defect not located, why (see misses_table())
 //   benchmark_detection --repair [--mesh NAME]  what the automatic mode and PMP::fair on the same
 //                                              regions do to the defects and to the rest of the
-//                                              surface (see repair_table())
+//                                              surface (see repair_table()); then what limits
+//                                              the repairs (see repair_limits_table())
+//   benchmark_detection ... --fairing-margin N  the automatic mode with HLP::fairing_margin(N)
 //   benchmark_detection --demo [--bending]     the regions of the demo's --detect mode
 //                                              (scripts/demo, part 3: the Beetle with a dent
 //                                              in its roof; 60 lines, 3 x 4 light setups)
@@ -572,7 +574,8 @@ void repair_table(const std::string& name, unsigned seeds)
   auto repair = [](HB::Mesh& mesh, std::size_t& faired) {
     const auto repairs = CGAL::detect_and_fair_highlight_line_irregularities(
         mesh, HL::default_light_setup(mesh, HLP::number_of_lines(30)),
-        HLP::number_of_scales(HLP::local_residual(local_residual), scales));
+        HLP::fairing_margin(HLP::number_of_scales(HLP::local_residual(local_residual), scales),
+                            fairing_margin));
     for (const auto& r : repairs)
       faired += r.repaired;
   };
@@ -621,6 +624,122 @@ void repair_table(const std::string& name, unsigned seeds)
             << all_ours.farthest / e << " ē; PMP::fair " << all_pmp.closer << " of "
             << all_pmp.moved << ", median " << all_pmp.median_ratio() << ", up to "
             << all_pmp.farthest / e << " ē\n";
+}
+
+// How many of a set of defects a repair brought closer to the undented surface, and the median
+// ratio after / before of their RMS distances to it.
+struct Closer_tally
+{
+  std::size_t count = 0, closer = 0;
+  std::vector<double> ratios;
+  void add(double before, double after)
+  {
+    ++count;
+    closer += after < before;
+    ratios.push_back(after / (std::max)(before, 1e-300));
+  }
+  void add(const Closer_tally& other)
+  {
+    count += other.count;
+    closer += other.closer;
+    ratios.insert(ratios.end(), other.ratios.begin(), other.ratios.end());
+  }
+  std::string str() const
+  {
+    if (count == 0)
+      return "-";
+    std::vector<double> sorted = ratios;
+    std::sort(sorted.begin(), sorted.end());
+    std::ostringstream out;
+    out << closer << "/" << count << " " << std::setprecision(3) << sorted[sorted.size() / 2];
+    return out.str();
+  }
+};
+
+// --repair, second table: what limits the repairs. Per injected defect: whether the undented
+// surface under it is predictable from its surroundings (HB::surroundings_predict_the_surface:
+// a quadric fitted to the undented rim R to R + 4 ē predicts the undented surface within R better
+// than the dented surface lies), and what fair_with_highlight_lines() (default parameters, the
+// lights of the automatic mode) and PMP::fair() do on the defect's own disc (the faces within
+// R + 2 ē of its centre: the region a user who sees the defect would fair), each on its own.
+// Columns: closer/count and the median ratio after / before of the RMS distance to the
+// undented surface (over the vertices within R).
+void repair_limits_table(const std::string& name, unsigned seeds)
+{
+  HB::Mesh original;
+  if (!read_shared_mesh(name, original))
+    return;
+  const double e = HB::mean_edge_length(original);
+  std::cout << "  h/ē  defects  predictable | automatic mode: moved predictable | defect's "
+               "disc: ours        PMP::fair   | predictable only: ours   PMP::fair\n";
+  Closer_tally all_ours, all_pmp, all_predictable_ours, all_predictable_pmp;
+  for (double h : {1.0, 0.5, 0.2, 0.1}) {
+    std::size_t defects = 0, predictable = 0;
+    Closer_tally automatic, automatic_predictable, ours, pmp, predictable_ours, predictable_pmp;
+    for (unsigned seed = 1; seed <= seeds; ++seed) {
+      HB::Mesh dented = original;
+      const auto injected = HB::inject_defects(dented, 4, 5.0, h, seed, [](auto) { return true; });
+      // The lights of the automatic mode as repair_table() sets them, from the dented mesh.
+      const auto lights = HL::default_light_setup(dented, HLP::number_of_lines(30));
+      HB::Mesh repaired = dented;
+      CGAL::detect_and_fair_highlight_line_irregularities(
+          repaired, lights,
+          HLP::fairing_margin(HLP::local_residual(HLP::number_of_scales(scales), local_residual),
+                              fairing_margin));
+      const HB::Repair_outcome automatic_outcome =
+          HB::repair_outcome(original, dented, repaired, injected);
+      for (std::size_t d = 0; d < injected.size(); ++d) {
+        ++defects;
+        const double before = automatic_outcome.before[d];
+        const bool is_predictable = HB::surroundings_predict_the_surface(
+            original, injected[d],
+            CGAL::Polygon_mesh_processing::compute_vertex_normal(injected[d].centre_vertex,
+                                                                 original),
+            4 * e, before);
+        predictable += is_predictable;
+        if (automatic_outcome.moved[d]) {
+          automatic.add(before, automatic_outcome.after[d]);
+          if (is_predictable)
+            automatic_predictable.add(before, automatic_outcome.after[d]);
+        }
+        const auto disc = HB::defect_disc(dented, injected[d], injected[d].radius + 2 * e);
+        HB::Mesh by_ours = dented, by_pmp = dented;
+        // A refused or failed fairing (e.g. the centre on a sharp edge: an empty disc) leaves
+        // the mesh as it was, and is measured as such.
+        try {
+          CGAL::fair_with_highlight_lines(by_ours, disc, lights);
+        } catch (const std::exception&) {
+        }
+        try {
+          std::vector<HB::vertex_descriptor> movable;
+          HL::movable_vertices(by_pmp, disc, std::back_inserter(movable));
+          CGAL::Polygon_mesh_processing::fair(by_pmp, movable);
+        } catch (const std::exception&) {
+        }
+        const double after_ours =
+            HB::repair_outcome(original, dented, by_ours, {injected[d]}).after[0];
+        const double after_pmp =
+            HB::repair_outcome(original, dented, by_pmp, {injected[d]}).after[0];
+        ours.add(before, after_ours);
+        pmp.add(before, after_pmp);
+        if (is_predictable) {
+          predictable_ours.add(before, after_ours);
+          predictable_pmp.add(before, after_pmp);
+        }
+      }
+    }
+    std::cout << std::setw(5) << h << std::setw(9) << defects << std::setw(13) << predictable
+              << std::setw(20) << automatic.str() << std::setw(13) << automatic_predictable.str()
+              << std::setw(19) << ours.str() << std::setw(14) << pmp.str() << std::setw(23)
+              << predictable_ours.str() << std::setw(12) << predictable_pmp.str() << "\n";
+    all_ours.add(ours);
+    all_pmp.add(pmp);
+    all_predictable_ours.add(predictable_ours);
+    all_predictable_pmp.add(predictable_pmp);
+  }
+  std::cout << "  all heights, the defect's own disc: ours " << all_ours.str() << ", PMP::fair "
+            << all_pmp.str() << "; the predictable defects: ours " << all_predictable_ours.str()
+            << ", PMP::fair " << all_predictable_pmp.str() << "\n";
 }
 
 void demo_table()
@@ -764,7 +883,7 @@ int main(int argc, char** argv)
         misses_table(name, seeds);
     else if (repair)
       for (const auto& name : meshes)
-        repair_table(name, seeds);
+        repair_table(name, seeds), repair_limits_table(name, seeds);
     else if (local)
       for (const auto& name : meshes)
         local_table(name, seeds);

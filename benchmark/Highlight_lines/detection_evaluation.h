@@ -17,6 +17,8 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/detect_highlight_line_irregularities.h>
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -301,6 +303,90 @@ inline Mesh demo_beetle(vertex_descriptor& centre)
   for (const auto& m : moved)
     mesh.point(m.first) = m.second;
   return mesh;
+}
+
+/// The faces around the vertices within `radius` of the defect's centre, reached from its centre
+/// vertex along edges and never past a vertex of a sharp edge (faces more than 60° apart, as
+/// the automatic mode's regions): the region a user who sees the defect would fair (the defect
+/// and a rim).
+inline std::vector<face_descriptor> defect_disc(const Mesh& mesh, const Injected_defect& defect,
+                                                double radius)
+{
+  const double cos_sharp = std::cos(std::acos(-1.0) / 3);
+  auto on_sharp_edge = [&](vertex_descriptor v) {
+    for (auto h : halfedges_around_target(halfedge(v, mesh), mesh))
+      if (!is_border_edge(h, mesh) &&
+          CGAL::Polygon_mesh_processing::compute_face_normal(face(h, mesh), mesh) *
+                  CGAL::Polygon_mesh_processing::compute_face_normal(face(opposite(h, mesh), mesh),
+                                                                     mesh) <
+              cos_sharp)
+        return true;
+    return false;
+  };
+  std::set<vertex_descriptor> reached{defect.centre_vertex};
+  std::vector<vertex_descriptor> front{defect.centre_vertex};
+  std::set<face_descriptor> disc;
+  while (!front.empty()) {
+    const vertex_descriptor v = front.back();
+    front.pop_back();
+    if (on_sharp_edge(v))
+      continue;
+    for (face_descriptor f : faces_around_target(halfedge(v, mesh), mesh))
+      if (f != boost::graph_traits<Mesh>::null_face())
+        disc.insert(f);
+    for (vertex_descriptor u : vertices_around_target(halfedge(v, mesh), mesh))
+      if (CGAL::squared_distance(mesh.point(u), defect.centre) <= radius * radius &&
+          reached.insert(u).second)
+        front.push_back(u);
+  }
+  return std::vector<face_descriptor>(disc.begin(), disc.end());
+}
+
+/// Whether the undented surface under a defect is what its surroundings predict, to better than
+/// the defect's own depth: the quadric height field over the tangent plane at the defect's
+/// centre (normal `normal`), fitted to the undented vertices between R and R + `rim` from the
+/// centre (reached along edges, facing the same way), predicts the undented vertices within R
+/// with a smaller RMS error than the RMS distance `dented_rms` of the dented ones. No method
+/// that sees only the dented mesh can be expected to bring a defect closer where it does not:
+/// the design there varies at the defect's own scale.
+inline bool surroundings_predict_the_surface(const Mesh& undented, const Injected_defect& defect,
+                                             const Vector& normal, double rim, double dented_rms)
+{
+  const Vector a = std::abs(normal.x()) < 0.9 ? Vector(1, 0, 0) : Vector(0, 1, 0);
+  Vector t = CGAL::cross_product(normal, a);
+  t = t / std::sqrt(t.squared_length());
+  const Vector u = CGAL::cross_product(normal, t);
+  Injected_defect reach = defect;
+  reach.radius = defect.radius + rim;
+  std::vector<std::array<double, 3>> outer, inner;
+  std::set<vertex_descriptor> seen;
+  for (face_descriptor f : defect_disc(undented, reach, reach.radius))
+    for (vertex_descriptor v : vertices_around_face(halfedge(f, undented), undented)) {
+      const Vector d = undented.point(v) - defect.centre;
+      if (!seen.insert(v).second || d.squared_length() > CGAL::square(reach.radius) ||
+          CGAL::Polygon_mesh_processing::compute_vertex_normal(v, undented) * normal < 0.3)
+        continue;
+      const std::array<double, 3> c{d * t / defect.radius, d * u / defect.radius, d * normal};
+      (d.squared_length() < CGAL::square(defect.radius) ? inner : outer).push_back(c);
+    }
+  if (outer.size() < 12 || inner.empty())
+    return false;
+  auto basis = [](double x, double y) {
+    Eigen::Matrix<double, 1, 6> b;
+    b << 1, x, y, x * x, x * y, y * y;
+    return b;
+  };
+  Eigen::MatrixXd A(outer.size(), 6);
+  Eigen::VectorXd h(outer.size());
+  for (std::size_t i = 0; i < outer.size(); ++i) {
+    A.row(Eigen::Index(i)) = basis(outer[i][0], outer[i][1]);
+    h(Eigen::Index(i)) = outer[i][2];
+  }
+  const Eigen::VectorXd fit = A.colPivHouseholderQr().solve(h);
+  double error = 0;
+  for (const auto& c : inner)
+    error += CGAL::square(basis(c[0], c[1]).dot(fit) - c[2]);
+  return std::sqrt(error / double(inner.size())) < dented_rms;
 }
 
 /// What a repair did to the injected defects and to the rest of the surface, measured against

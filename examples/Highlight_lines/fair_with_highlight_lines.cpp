@@ -25,6 +25,7 @@
 #include "region_overview.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -86,6 +87,10 @@ const char* usage =
     "  --min-confidence C    with --detect: fair only the regions of confidence >= C (default\n"
     "                        0.5; the others, elongated along a feature or wider than a defect,\n"
     "                        are likely design and are listed as skipped); 0 fairs every one\n"
+    "  --fairing-margin N    with --detect: rings of faces added around each region before it\n"
+    "                        is faired, never across a sharp edge (default 3, the detection\n"
+    "                        scale; fewer move less design around a region, but may leave part\n"
+    "                        of a defect outside it)\n"
     "  --show-irregularities also sweep the lights over the whole mesh and write\n"
     "                        PREFIX_irregularities.png, the irregular regions tinted (done by\n"
     "                        default only for the bundled beetle without --center/--region)\n"
@@ -110,6 +115,7 @@ struct Options
   HL::Fairness_energy energy = HL::Fairness_energy::CURVATURE_VARIATION;
   std::size_t max_regions = std::size_t(-1);
   double min_confidence = 0.5;
+  int fairing_margin = 3;
 };
 
 Options parse(int argc, char** argv)
@@ -158,6 +164,11 @@ Options parse(int argc, char** argv)
       o.min_confidence = number(i, argc, argv);
       if (!(o.min_confidence >= 0 && o.min_confidence <= 1))
         fail("--min-confidence must be in [0, 1]");
+    } else if (a == "--fairing-margin") {
+      const double n = number(i, argc, argv);
+      if (!(n >= 0 && n <= 1000 && n == std::floor(n)))
+        fail("--fairing-margin must be a whole number of rings in [0, 1000]");
+      o.fairing_margin = int(n);
     } else if (a == "--max-regions") {
       const double n = number(i, argc, argv);
       if (!(n >= 1))
@@ -320,11 +331,12 @@ int detect_and_fair(Mesh& mesh, const Options& o)
     std::cout << "the " << o.max_regions << " strongest are faired\n";
   }
   std::vector<std::vector<face_descriptor>> regions;
-  // Each with a margin of 3 rings (the detection scale), as
+  // Each with a margin of rings (by default 3, the detection scale), as
   // detect_and_fair_highlight_line_irregularities() does: a region is centred where the lines
   // move most, often one flank of the defect, and a fairing moves only its inner vertices.
   for (const auto& r : found)
-    regions.push_back(HL::grown_face_region(mesh, r.faces, 3, 60.0, get(CGAL::vertex_point, mesh)));
+    regions.push_back(HL::grown_face_region(mesh, r.faces, o.fairing_margin, 60.0,
+                                            get(CGAL::vertex_point, mesh)));
   const pic::Image before = region_overview::picture(mesh, lights, regions, o.width, o.height);
 
   std::size_t repaired = 0;

@@ -35,6 +35,7 @@ enum minimum_evidence_t { minimum_evidence };
 enum region_margin_t { region_margin };
 enum maximum_incidence_angle_t { maximum_incidence_angle };
 enum minimum_confidence_t { minimum_confidence };
+enum fairing_margin_t { fairing_margin };
 enum all_sides_t { all_sides };
 enum local_residual_t { local_residual };
 enum number_of_scales_t { number_of_scales };
@@ -108,6 +109,7 @@ CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(minimum_evidence_t, minimum_evidence)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(region_margin_t, region_margin)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(maximum_incidence_angle_t, maximum_incidence_angle)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(minimum_confidence_t, minimum_confidence)
+CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(fairing_margin_t, fairing_margin)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(all_sides_t, all_sides)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(local_residual_t, local_residual)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(number_of_scales_t, number_of_scales)

@@ -1276,6 +1276,53 @@ TEST(DetectAndFair, TheFairingMarginStopsAtSharpEdges)
   check_that_the_fairing_margin_stops_at_sharp_edges<test::Polyhedron>();
 }
 
+// The fairing margin is the caller's: with `fairing_margin(k)` each region is faired grown by
+// exactly k rings (0: the region as found), and a margin out of [0, 1000] is refused before
+// anything moves, on either mesh type.
+TEST(DetectAndFair, FairsWithTheCallersMargin)
+{
+  test::Soup soup = test::grid(50, 2.0 / 50, -1, -1, hood, 0.3, 6);
+  HB::Mesh mesh = test::to_mesh<HB::Mesh>(soup);
+  ASSERT_EQ(HB::inject_defects(mesh, 1, 4.0, 0.5, 6, [](auto) { return true; }).size(), 1u);
+  const HB::Mesh dented = mesh;
+  const auto lights = HL::default_light_setup(mesh, HLP::number_of_lines(30));
+  for (int margin : {0, 1}) {
+    SCOPED_TRACE(margin);
+    mesh = dented;
+    const auto repairs = CGAL::detect_and_fair_highlight_line_irregularities(
+        mesh, lights, HLP::fairing_margin(CGAL::parameters::number_of_iterations(2), margin));
+    ASSERT_FALSE(repairs.empty());
+    ASSERT_TRUE(repairs[0].repaired) << repairs[0].failure;
+    const auto expected = HL::grown_face_region(dented, repairs[0].irregularity.faces, margin, 60.0,
+                                                get(CGAL::vertex_point, dented));
+    EXPECT_EQ(repairs[0].faired_faces, expected);
+    if (margin == 0) {
+      EXPECT_EQ(repairs[0].faired_faces, repairs[0].irregularity.faces);
+    } else {
+      EXPECT_GT(repairs[0].faired_faces.size(), repairs[0].irregularity.faces.size());
+    }
+  }
+  for (auto v : vertices(mesh))
+    soup.points[std::size_t(v)] = dented.point(v);
+  test::Polyhedron polyhedron = test::to_mesh<test::Polyhedron>(soup);
+  const test::Polyhedron polyhedron_before = polyhedron;
+  mesh = dented;
+  for (int wrong : {-1, 1001}) {
+    EXPECT_THROW(CGAL::detect_and_fair_highlight_line_irregularities(mesh, lights,
+                                                                     HLP::fairing_margin(wrong)),
+                 HL::Invalid_input);
+    EXPECT_THROW(CGAL::detect_and_fair_highlight_line_irregularities(polyhedron, lights,
+                                                                     HLP::fairing_margin(wrong)),
+                 HL::Invalid_input);
+  }
+  for (auto v : vertices(mesh))
+    EXPECT_EQ(mesh.point(v), dented.point(v));
+  auto p = vertices(polyhedron).begin();
+  for (auto q = vertices(polyhedron_before).begin(); q != vertices(polyhedron_before).end();
+       ++p, ++q)
+    EXPECT_EQ((*p)->point(), (*q)->point());
+}
+
 TEST(DetectAndFair, SurfaceMeshAndPolyhedronAgree)
 {
   test::Soup soup = test::grid(50, 2.0 / 50, -1, -1, hood, 0.3, 6);
