@@ -1,7 +1,7 @@
 // The curvature variation energy's mean curvature (internal/curvature_variation_energy.h,
 // internal/mean_curvature_fit.h): exact for quadratic height functions on jittered
-// triangulations, an exact quadratic in the normal displacements, and an energy that does not
-// grow when an irregular triangulation is refined.
+// triangulations, an exact quadratic in the normal displacements, an energy that does not
+// grow when an irregular triangulation is refined, and no continuation of a crease into R.
 #include "../model/test_meshes.h"
 
 #include <CGAL/Highlight_lines/internal/curvature_variation_energy.h>
@@ -323,6 +323,49 @@ TEST(CurvatureVariation, FittedEnergyDoesNotGrowWithTheDensity)
   }
   EXPECT_GT(cotangent[80], 2 * cotangent[40]);
   EXPECT_GT(cotangent[160], 2 * cotangent[80]);
+}
+
+// A region next to a crease: the vertices on the crease outside R are marked, and no edge of the
+// energy joins them (a crease is a curvature discontinuity by design: continuing its mean
+// curvature into R bent the faired surface; see vertices_on_sharp_edges()). The same region
+// on the surface without the fold: nothing marked, and edges to the same column do count.
+TEST(CurvatureVariation, LeavesTheCurvatureOfACreaseOutsideTheRegion)
+{
+  const double step = 2.0 / 40;
+  for (bool fold : {true, false}) {
+    SCOPED_TRACE(fold ? "folded along x = 0.1" : "flat");
+    const Plain_mesh m = plain(grid(40, step, -1, -1, [fold](double x, double y) {
+      return 0.1 * x * y + (fold && x > 0.1 ? 3 * (x - 0.1) : 0.0); // 72° between the normals
+    }));
+    // The crease column x = 0.1 lies one edge right of the disk's rightmost vertices: in their
+    // one-rings, outside R.
+    const std::vector<int> energy = disk_vertices(m, 0.1 - 4 * step, 0, 3.5 * step);
+    ASSERT_FALSE(energy.empty());
+    std::vector<Vec3> normals;
+    const HLI::Frozen_curvature_variation frozen =
+        freeze(m, energy, vertex_normals(m), cotangent_options(), normals);
+    std::size_t crease_rows = 0, edges_to_the_column = 0;
+    for (std::size_t r = 0; r < frozen.on_crease.size(); ++r) {
+      const bool on_column =
+          std::abs(m.positions[std::size_t(frozen.weights.energy_vertices[r])][0] - 0.1) < 1e-9;
+      EXPECT_EQ(bool(frozen.on_crease[r]), fold && on_column && !frozen.inner[r]);
+      crease_rows += frozen.on_crease[r];
+    }
+    HLI::for_each_weighted_edge(frozen, [&](int i, int j, double) {
+      EXPECT_FALSE(frozen.on_crease[std::size_t(i)] || frozen.on_crease[std::size_t(j)]);
+      for (int k : {i, j})
+        edges_to_the_column +=
+            std::abs(m.positions[std::size_t(frozen.weights.energy_vertices[std::size_t(k)])][0] -
+                     0.1) < 1e-9;
+    });
+    if (fold) {
+      EXPECT_GT(crease_rows, 0u);
+      EXPECT_EQ(edges_to_the_column, 0u);
+    } else {
+      EXPECT_EQ(crease_rows, 0u);
+      EXPECT_GT(edges_to_the_column, 0u);
+    }
+  }
 }
 
 } // namespace
