@@ -144,6 +144,13 @@ vertices_with_degenerate_rings(const std::vector<std::array<double, 3>>& positio
   return degenerate;
 }
 
+// The angle (radians) between two faces' normals beyond which their edge is a crease for the
+// energy: 60°, the default of the detection's and PMP::detect_sharp_edges()' criterion.
+inline double crease_angle()
+{
+  return std::acos(-1.0) / 3;
+}
+
 // Per vertex of `positions`: whether it lies on a sharp edge of `triangles`, an edge whose two
 // triangles' normals are more than `sharp_edge_angle` (radians) apart, the criterion of
 // PMP::detect_sharp_edges(). A crease is a curvature discontinuity by design: a vertex on it
@@ -183,13 +190,15 @@ vertices_on_sharp_edges(const std::vector<std::array<double, 3>>& positions,
 // those of vertices_with_degenerate_rings() at `positions`. The fairing fixes them at its input:
 // a row switching between the two discretisations from one iteration to the next makes the
 // energy jump, and the iteration then took 10 to 60 % more steps (scan-like real dents).
+// `on_sharp_edge` (per vertex of `positions`): the crease vertices, if not those of
+// vertices_on_sharp_edges() at `positions` at 60°; the fairing fixes them at its input too.
 template <typename Neighbours>
 Frozen_curvature_variation freeze_curvature_variation(
     const std::vector<std::array<double, 3>>& positions,
     const std::vector<std::array<int, 3>>& triangles, const std::vector<int>& energy_vertices,
     Neighbours&& neighbours_of, double length_scale,
     const Mean_curvature_fit_options& fit = default_mean_curvature_fit_options(),
-    const std::vector<char>* degenerate = nullptr)
+    const std::vector<char>* degenerate = nullptr, const std::vector<char>* on_sharp_edge = nullptr)
 {
   Frozen_curvature_variation frozen;
   std::vector<char> seen(positions.size(), 0), is_energy(positions.size(), 0);
@@ -215,8 +224,10 @@ Frozen_curvature_variation freeze_curvature_variation(
   }
   frozen.scale = length_scale * length_scale;
   {
-    const std::vector<char> sharp =
-        vertices_on_sharp_edges(positions, triangles, std::acos(-1.0) / 3);
+    const bool given = on_sharp_edge && on_sharp_edge->size() == positions.size();
+    const std::vector<char> computed =
+        given ? std::vector<char>() : vertices_on_sharp_edges(positions, triangles, crease_angle());
+    const std::vector<char>& sharp = given ? *on_sharp_edge : computed;
     frozen.on_crease.assign(rows.size(), 0);
     for (std::size_t r = 0; r < rows.size(); ++r)
       frozen.on_crease[r] = !frozen.inner[r] && sharp[std::size_t(rows[r])];

@@ -169,6 +169,9 @@ public:
         fit_options_.method == Mean_curvature_fit_options::Method::FIT_ON_DEGENERATE_RINGS)
       degenerate_rings_ = vertices_with_degenerate_rings(
           local_points(), sweeper_.local_mesh().face_vertices, fit_options_.sliver_angle);
+    if (options_.fairness_energy == Fairness_energy::CURVATURE_VARIATION)
+      crease_vertices_ = vertices_on_sharp_edges(
+          local_points(), sweeper_.local_mesh().face_vertices, crease_angle());
     desired_.clear();
     make_desired_lines(report);
     // From now on only the targeted lines count (q_diff), so the next models are computed for
@@ -403,7 +406,7 @@ private:
                i < region_.vertex_neighbor_begin[std::size_t(v) + 1]; ++i)
             out.push_back(region_.vertex_neighbors[std::size_t(i)]);
         },
-        length_scale_, fit_options_, &degenerate_rings_);
+        length_scale_, fit_options_, &degenerate_rings_, &crease_vertices_);
     normals.clear();
     for (int v : frozen.weights.energy_vertices)
       normals.push_back(sweeper_.vertex_normals().unit_normal(v));
@@ -911,7 +914,8 @@ private:
   // local vertex), the cotangent formula elsewhere (curvature_variation_energy.h).
   Mean_curvature_fit_options fit_options_ = default_mean_curvature_fit_options();
   std::vector<char> degenerate_rings_;
-  std::vector<char> free_steps_; // per step taken: the program's minimiser, see take_step()
+  std::vector<char> crease_vertices_; // on a sharp edge in the input, see freeze_variation()
+  std::vector<char> free_steps_;      // per step taken: the program's minimiser, see take_step()
   std::vector<double> last_program_step_; // the last solution inside the trust region, as solved
   // The slow tail's differences of successive solutions and steps, see accelerate_tail().
   static constexpr std::size_t tail_memory = 5;
