@@ -22,7 +22,8 @@
 //   benchmark_detection --repair [--mesh NAME]  what the automatic mode and PMP::fair on the same
 //                                              regions do to the defects and to the rest of the
 //                                              surface (see repair_table()); then what limits
-//                                              the repairs (see repair_limits_table())
+//                                              the repairs (see repair_limits_table(); not
+//                                              with --no-limits)
 //   benchmark_detection ... --fairing-margin N  the automatic mode with HLP::fairing_margin(N)
 //   benchmark_detection --demo [--bending]     the regions of the demo's --detect mode
 //                                              (scripts/demo, part 3: the Beetle with a dent
@@ -549,18 +550,14 @@ struct Repair_row
   }
 };
 
-// PMP::fair() on the regions the automatic mode would fair, one after the other.
-void pmp_fair_detected_regions(HB::Mesh& mesh)
+// PMP::fair() on the regions the automatic mode faired, one after the other.
+void pmp_fair_regions(HB::Mesh& mesh, const std::vector<HL::Irregularity_repair<HB::Mesh>>& repairs)
 {
-  std::vector<HB::Irregularity> found = detect(mesh);
-  HL::join_touching_irregularities(mesh, found, minimum_confidence);
-  for (const auto& r : found) {
-    if (r.confidence < minimum_confidence)
+  for (const auto& r : repairs) {
+    if (!r.repaired)
       continue;
-    const auto faces =
-        HL::grown_face_region(mesh, r.faces, fairing_margin, 60.0, get(CGAL::vertex_point, mesh));
     std::vector<HB::vertex_descriptor> movable;
-    HL::movable_vertices(mesh, faces, std::back_inserter(movable));
+    HL::movable_vertices(mesh, r.faired_faces, std::back_inserter(movable));
     CGAL::Polygon_mesh_processing::fair(mesh, movable);
   }
 }
@@ -578,6 +575,7 @@ void repair_table(const std::string& name, unsigned seeds)
                             fairing_margin));
     for (const auto& r : repairs)
       faired += r.repaired;
+    return repairs;
   };
   {
     HB::Mesh mesh = original;
@@ -600,8 +598,7 @@ void repair_table(const std::string& name, unsigned seeds)
       const auto injected = HB::inject_defects(mesh, 4, 5.0, h, seed, [](auto) { return true; });
       const HB::Mesh dented = mesh;
       HB::Mesh by_pmp = mesh;
-      repair(mesh, faired);
-      pmp_fair_detected_regions(by_pmp);
+      pmp_fair_regions(by_pmp, repair(mesh, faired));
       defects += injected.size();
       ours.add(HB::repair_outcome(original, dented, mesh, injected));
       pmp.add(HB::repair_outcome(original, dented, by_pmp, injected));
@@ -835,7 +832,7 @@ int main(int argc, char** argv)
 {
   std::vector<char*> args;
   bool curves_only = false, hood = true, local = false, demo = false, misses = false,
-       repair = false;
+       repair = false, limits = true;
   unsigned seeds = 2;
   std::vector<std::string> meshes{"beetle.off",  "bunny.off",      "camelhead.off",
                                   "fandisk.off", "rocker-arm.off", "spot.off"};
@@ -852,6 +849,8 @@ int main(int argc, char** argv)
       misses = true, curves_only = true, hood = false;
     else if (std::strcmp(argv[i], "--repair") == 0) // what the automatic mode does
       repair = true, curves_only = true, hood = false;
+    else if (std::strcmp(argv[i], "--no-limits") == 0) // --repair: the first table only
+      limits = false;
     else if (std::strcmp(argv[i], "--demo") == 0)
       demo = true, curves_only = true;
     else if (std::strcmp(argv[i], "--bending") == 0) // HLP::local_residual(false)
@@ -882,8 +881,11 @@ int main(int argc, char** argv)
       for (const auto& name : meshes)
         misses_table(name, seeds);
     else if (repair)
-      for (const auto& name : meshes)
-        repair_table(name, seeds), repair_limits_table(name, seeds);
+      for (const auto& name : meshes) {
+        repair_table(name, seeds);
+        if (limits)
+          repair_limits_table(name, seeds);
+      }
     else if (local)
       for (const auto& name : meshes)
         local_table(name, seeds);

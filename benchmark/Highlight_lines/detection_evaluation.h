@@ -12,6 +12,7 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Highlight_lines/fairing_building_blocks.h>
+#include <CGAL/Highlight_lines/internal/sharp_vertices.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Surface_mesh.h>
@@ -312,17 +313,9 @@ inline Mesh demo_beetle(vertex_descriptor& centre)
 inline std::vector<face_descriptor> defect_disc(const Mesh& mesh, const Injected_defect& defect,
                                                 double radius)
 {
-  const double cos_sharp = std::cos(std::acos(-1.0) / 3);
-  auto on_sharp_edge = [&](vertex_descriptor v) {
-    for (auto h : halfedges_around_target(halfedge(v, mesh), mesh))
-      if (!is_border_edge(h, mesh) &&
-          CGAL::Polygon_mesh_processing::compute_face_normal(face(h, mesh), mesh) *
-                  CGAL::Polygon_mesh_processing::compute_face_normal(face(opposite(h, mesh), mesh),
-                                                                     mesh) <
-              cos_sharp)
-        return true;
-    return false;
-  };
+  CGAL::Highlight_lines::internal::Sharp_vertex_test<Mesh,
+                                                     Mesh::Property_map<vertex_descriptor, Point>>
+      on_sharp_edge(mesh, 60.0, mesh.points());
   std::set<vertex_descriptor> reached{defect.centre_vertex};
   std::vector<vertex_descriptor> front{defect.centre_vertex};
   std::set<face_descriptor> disc;

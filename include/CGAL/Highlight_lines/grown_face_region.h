@@ -5,15 +5,13 @@
 #define CGAL_HIGHLIGHT_LINES_GROWN_FACE_REGION_H
 
 #include <CGAL/Highlight_lines/Invalid_input.h>
-#include <CGAL/Kernel_traits.h>
-#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Highlight_lines/internal/sharp_vertices.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/properties.h>
 
 #include <cmath>
 #include <cstddef>
-#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -57,9 +55,6 @@ std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> grown_f
   typedef boost::graph_traits<TriangleMesh> Graph_traits;
   typedef typename Graph_traits::face_descriptor face_descriptor;
   typedef typename Graph_traits::vertex_descriptor vertex_descriptor;
-  typedef typename boost::property_traits<VertexPointMap>::value_type Point;
-  typedef typename Kernel_traits<Point>::Kernel Kernel;
-  namespace PMP = CGAL::Polygon_mesh_processing;
 
   if (rings < 0)
     throw Invalid_input(Invalid_input::Problem::INVALID_PARAMETER,
@@ -69,27 +64,8 @@ std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> grown_f
                         "grown_face_region: sharp_edge_angle must be in (0, 180] degrees");
   const auto fim = get_initialized_face_index_map(tm);
   const auto vim = get_initialized_vertex_index_map(tm);
-  const double pi = std::acos(-1.0);
-  const double cos_sharp = std::cos(sharp_edge_angle * pi / 180);
-  std::unordered_map<std::size_t, typename Kernel::Vector_3> normals; // by face index
-  auto normal = [&](face_descriptor f) -> const typename Kernel::Vector_3& {
-    auto it = normals.find(std::size_t(get(fim, f)));
-    if (it == normals.end())
-      it = normals
-               .emplace(std::size_t(get(fim, f)),
-                        PMP::compute_face_normal(f, tm, CGAL::parameters::vertex_point_map(vpm)))
-               .first;
-    return it->second;
-  };
-  auto on_sharp_edge = [&](vertex_descriptor v) {
-    for (auto h : halfedges_around_target(halfedge(v, tm), tm)) {
-      const face_descriptor f = face(h, tm), g = face(opposite(h, tm), tm);
-      if (f != Graph_traits::null_face() && g != Graph_traits::null_face() &&
-          CGAL::to_double(normal(f) * normal(g)) < cos_sharp)
-        return true;
-    }
-    return false;
-  };
+  internal::Sharp_vertex_test<TriangleMesh, VertexPointMap> on_sharp_edge(tm, sharp_edge_angle,
+                                                                          vpm);
 
   std::vector<face_descriptor> grown = region;
   std::unordered_set<std::size_t> in_region, reached;
