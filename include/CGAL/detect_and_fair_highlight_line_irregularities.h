@@ -48,11 +48,11 @@ fails is left exactly as it was, recorded with the reason, and the next region i
 <b>Not yet a reliable repair.</b> Measured against the undented surface on the shared real
 meshes with injected dents and bumps (`benchmark_detection --repair`, see the manual), 7 of
 the 86 defects whose vertices this function moved ended closer to the undented surface, and
-it moved the surface away from the defects by up to 2.8–6.5 mean edge lengths (with
+it moved the surface away from the defects by up to 1.2–4.2 mean edge lengths (with
 `Polygon_mesh_processing::fair()` on the same regions, 5 of 86): the regions found are
 placed and sized for seeing a defect, not for fairing it (on the beetle, the fairing of each
-defect's own disc brings 10 of the 11 defects that their surroundings predict closer; these
-regions 2 of 5). Check each repair (its `faired_faces`) before keeping it.
+defect's own disc brings all 11 defects that their surroundings predict closer; this function
+moves 5 of them, 4 closer). Check each repair (its `faired_faces`) before keeping it.
 
 \tparam TriangleMesh a model of `MutableFaceGraph` whose faces are triangles
 \tparam GeomTraits a model of `Kernel`
