@@ -26,18 +26,23 @@ enum class Fairness_energy {
   /// part of \f$ K_i \f$ (a discretisation artefact, large where cotangents are) dominates the
   /// Willmore energy, and displacements along the normals that cancel it bend the surface.
   MEAN_CURVATURE,
-  /// \f$ \ell^2 \sum_{ij} c_{ij} (H_i - H_j)^2 \f$ over the edges with an end inside the
-  /// region, \f$ H_i = K_i \cdot N_i \f$, \f$ c_{ij} = \frac{1}{2}(\cot\alpha_{ij} +
-  /// \cot\beta_{ij}) \f$ clamped to [0, 1], \f$ \ell^2 \f$ the area of the region (at a
-  /// vertex with a sliver or a folded triangle around it in the input, \f$ H_i \f$ is the
-  /// mean curvature of a quadric fitted to its two-ring instead: the cotangent formula there
-  /// measures the triangles, not the surface): the
-  /// variation of the mean curvature (a third-order energy, beyond the paper). Zero on planes
-  /// and spheres; its minimisers continue the surface's curvature across the region's border,
-  /// where the Willmore energy continues only its tangent planes, so that the faired surface
-  /// ends closer to the surface that should be there: on dents pressed into real meshes, the
-  /// RMS distance to the undented surface is half that of `Polygon_mesh_processing::fair()`
-  /// and 0.38 times that of `WILLMORE` (see the manual's section on real dents). The default.
+  /// \f$ \ell^2 \sum_{ij} c_{ij} (H_i - H_j)^2 + \mu \sum_i A_i H_i^2 \f$, the first sum
+  /// over the edges with an end inside the region, the second over its vertices,
+  /// \f$ H_i = K_i \cdot N_i \f$, \f$ c_{ij} = \frac{1}{2}(\cot\alpha_{ij} +
+  /// \cot\beta_{ij}) \f$ clamped to [0, 1], \f$ \ell^2 \f$ the area of the region,
+  /// \f$ \mu = 10 \f$ (at a vertex with a sliver or a folded triangle around it in the input,
+  /// \f$ H_i \f$ is the mean curvature of a quadric fitted to its two-ring instead: the
+  /// cotangent formula there measures the triangles, not the surface): the variation of the
+  /// mean curvature (a third-order energy, beyond the paper) and a share of the squared mean
+  /// curvature. The first term's minimisers continue the surface's curvature across the
+  /// region's border, where the Willmore energy continues only its tangent planes, so that the
+  /// faired surface ends closer to the surface that should be there: on dents pressed into real
+  /// meshes, the RMS distance to the undented surface is half that of
+  /// `Polygon_mesh_processing::fair()` and 0.4 times that of `WILLMORE` (see the manual's
+  /// section on real dents). The second keeps the fairing off surfaces of constant mean
+  /// curvature, on which the first is zero however far they are from the input (a region
+  /// across a narrow part of a mesh was otherwise pushed 35 mean edge lengths inwards). The
+  /// default.
   CURVATURE_VARIATION
 };
 

@@ -243,8 +243,11 @@ TEST(StepControl, ABlockedStepReturnsTheBestIterate)
     };
     Surface_mesh mesh = input;
     HL::Fairing_report report;
-    ASSERT_NO_THROW(report = CGAL::fair_with_highlight_lines(mesh, region, lights_above,
-                                                             HLP::qp_solver(std::ref(solver))));
+    // A threshold below the first step (7e-4 of the region's size), so that a second is tried.
+    ASSERT_NO_THROW(
+        report = CGAL::fair_with_highlight_lines(
+            mesh, region, lights_above,
+            HLP::combine(HLP::qp_solver(std::ref(solver)), HLP::convergence_threshold(1e-6))));
     EXPECT_EQ(report.status, HL::Fairing_report::Status::STEP_BLOCKED)
         << HL::to_string(report.status);
     EXPECT_EQ(report.iterations, 3u); // one step, then two blocked ones

@@ -591,7 +591,8 @@ std::vector<Vec3> row_normals(const Frozen_curvature_variation& frozen)
 }
 
 // E at `positions` with the frozen weights and normals, edge by edge: every edge of the mesh
-// with an end among the energy vertices, once; c_ij from the weights of an energy end.
+// with an end among the energy vertices, once, c_ij from the weights of an energy end; and
+// μ A_i H_i² per energy vertex.
 double direct_variation(const Problem& p, const Frozen_curvature_variation& frozen,
                         const std::vector<Vec3>& normals, const std::vector<Vec3>& positions)
 {
@@ -617,6 +618,9 @@ double direct_variation(const Problem& p, const Frozen_curvature_variation& froz
     const double d = H(edge.first) - H(edge.second);
     e += frozen.scale * clamped * d * d;
   }
+  for (std::size_t row = 0; row < w.energy_vertices.size(); ++row)
+    if (energy[std::size_t(w.energy_vertices[row])])
+      e += frozen.mean_curvature_weight * w.area[row] * std::pow(H(w.energy_vertices[row]), 2);
   return e;
 }
 
@@ -637,6 +641,7 @@ TEST(CurvatureVariationEnergy, QuadraticEqualsDirectEvaluationWithFrozenWeights)
   const double length_scale = 1.7;
   const Frozen_curvature_variation frozen = frozen_variation(p, length_scale);
   EXPECT_DOUBLE_EQ(frozen.scale, length_scale * length_scale);
+  EXPECT_GT(frozen.mean_curvature_weight, 0);
   const std::vector<Vec3> normals = row_normals(frozen);
   const Dense_quadratic q = dense_variation_quadratic(p, frozen, normals);
   EXPECT_EQ(q.lower_calls, 0u);
@@ -665,10 +670,11 @@ TEST(CurvatureVariationEnergy, HessianIsSymmetricPositiveSemidefinite)
   EXPECT_GE(eigen.eigenvalues().minCoeff(), -1e-12 * largest);
 }
 
-// Zero on a plane whatever the triangulation (H = 0 everywhere) and on a regularly triangulated
-// cylinder (every vertex alike, so every H alike, though the Willmore energy is not zero there);
-// dimensionless: scaling the mesh and ℓ together changes nothing.
-TEST(CurvatureVariationEnergy, VanishesWhereTheMeanCurvatureIsConstantAndIsScaleFree)
+// Zero on a plane whatever the triangulation (H = 0 everywhere). On a regularly triangulated
+// cylinder (every vertex alike, so every H alike) the variation term is zero and E is μ times the
+// Willmore energy (its term μ Σ A_i H_i², which keeps the fairing off surfaces of constant mean
+// curvature far from the input). Dimensionless: scaling the mesh and ℓ together changes nothing.
+TEST(CurvatureVariationEnergy, VanishesOnPlanesIsMuTimesWillmoreOnCylindersAndIsScaleFree)
 {
   std::mt19937 rng(13);
   Problem plane = variation_problem(rng, 3);
@@ -708,7 +714,13 @@ TEST(CurvatureVariationEnergy, VanishesWhereTheMeanCurvatureIsConstantAndIsScale
                                                                          cylinder.energy_vertices),
                                                  cylinder.mesh.positions);
   EXPECT_GT(willmore, 1);
-  EXPECT_LT(direct_variation(cylinder, frozen, normals, cylinder.mesh.positions), 1e-20 * willmore);
+  Frozen_curvature_variation variation_only = frozen;
+  variation_only.mean_curvature_weight = 0;
+  EXPECT_LT(direct_variation(cylinder, variation_only, normals, cylinder.mesh.positions),
+            1e-20 * willmore);
+  EXPECT_NEAR(curvature_variation_value(frozen, cylinder.mesh.positions, normals),
+              frozen.mean_curvature_weight * willmore,
+              1e-12 * frozen.mean_curvature_weight * willmore);
 
   // Scale: the bumpy patch and three times it, with ℓ three times as long.
   Problem bumpy = variation_problem(rng, 3), scaled = bumpy;
