@@ -46,7 +46,7 @@ A region whose fairing is refused (e.g. it has no movable vertex because it is t
 fails is left exactly as it was, recorded with the reason, and the next region is tried.
 
 <b>Not yet a reliable repair.</b> Measured against the undented surface on the shared real
-meshes with injected dents and bumps (`benchmark_detection --repair`, see the manual), 7 of
+meshes with injected dents and bumps (`benchmark_detection --repair`, see the manual), 8 of
 the 86 defects whose vertices this function moved ended closer to the undented surface, and
 it moved the surface away from the defects by up to 1.2–4.2 mean edge lengths (with
 `Polygon_mesh_processing::fair()` on the same regions, 5 of 86): the regions found are
