@@ -54,7 +54,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <map>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -187,7 +187,6 @@ vertices_on_sharp_edges(const std::vector<std::array<double, 3>>& positions,
 {
   using namespace willmore_detail;
   std::vector<char> on_sharp_edge(positions.size(), 0);
-  std::map<std::pair<int, int>, std::size_t> first_triangle; // edge -> triangle
   const double cos_sharp = std::cos(sharp_edge_angle);
   auto unit_normal = [&](const std::array<int, 3>& t) {
     const auto n = cross(positions[std::size_t(t[1])] - positions[std::size_t(t[0])],
@@ -195,14 +194,33 @@ vertices_on_sharp_edges(const std::vector<std::array<double, 3>>& positions,
     const double length = std::sqrt(dot(n, n));
     return length > 0 ? (1 / length) * n : n;
   };
+  // The triangle sides sorted by edge (a sorted array rather than a map: this runs on every
+  // triangle of the fairing's local mesh); each later triangle of an edge is compared with its
+  // first.
+  struct Side
+  {
+    int a, b;
+    std::size_t triangle;
+  };
+  std::vector<Side> sides;
+  sides.reserve(3 * triangles.size());
   for (std::size_t i = 0; i < triangles.size(); ++i)
     for (int c = 0; c < 3; ++c) {
-      const int a = triangles[i][std::size_t(c)], b = triangles[i][std::size_t((c + 1) % 3)];
-      const auto inserted = first_triangle.emplace(std::minmax(a, b), i);
-      if (!inserted.second && dot(unit_normal(triangles[inserted.first->second]),
-                                  unit_normal(triangles[i])) < cos_sharp)
-        on_sharp_edge[std::size_t(a)] = on_sharp_edge[std::size_t(b)] = 1;
+      const auto [a, b] =
+          std::minmax(triangles[i][std::size_t(c)], triangles[i][std::size_t((c + 1) % 3)]);
+      sides.push_back({a, b, i});
     }
+  std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) {
+    return std::tie(x.a, x.b, x.triangle) < std::tie(y.a, y.b, y.triangle);
+  });
+  for (std::size_t first = 0, next; first < sides.size(); first = next) {
+    for (next = first + 1;
+         next < sides.size() && sides[next].a == sides[first].a && sides[next].b == sides[first].b;
+         ++next)
+      if (dot(unit_normal(triangles[sides[first].triangle]),
+              unit_normal(triangles[sides[next].triangle])) < cos_sharp)
+        on_sharp_edge[std::size_t(sides[first].a)] = on_sharp_edge[std::size_t(sides[first].b)] = 1;
+  }
   return on_sharp_edge;
 }
 
