@@ -30,6 +30,7 @@
 #include <fstream>
 #include <functional>
 #include <iterator>
+#include <random>
 #include <set>
 #include <sstream>
 #include <string>
@@ -455,6 +456,81 @@ TEST(RealRegion, TheDefaultEnergyDoesNotDigAPocketIntoANarrowPart)
   EXPECT_LE(farthest, 2 * e) << describe(report);
   EXPECT_EQ(HB::count_moved_vertices_outside(faired, mesh, movable), 0u);
   EXPECT_TRUE(test::flipped_faces(mesh, faired).empty());
+}
+
+// Regions of the shared meshes as they are (8 per mesh at seeded vertices, the faces within 10
+// rings; rough, curved and creased parts included): the undented surface is the truth, so every
+// move is a change the user did not ask for. The default fairing changes them less than
+// PMP::fair() does (RMS of the movable vertices' moves; measured: median ratio 0.74 over these
+// 48 regions, 0.66 over 180; ours moves more on 16 of the 48, by up to 5.0 ē on the camel head
+// where PMP::fair() moves 0.73 ē), and keeps the hard guarantees on every one.
+TEST(RealRegion, FairingUndentedRegionsChangesThemLessThanPMPFair)
+{
+  std::vector<double> ratios;
+  double largest_move = 0;
+  for (const char* stem : {"beetle", "bunny", "camelhead", "fandisk", "rocker-arm", "spot"}) {
+    Mesh mesh;
+    const std::string path = std::string(HIGHLIGHT_LINES_SHARED_DATA_DIR) + "/" + stem + ".off";
+    if (!std::ifstream(path) || !CGAL::IO::read_polygon_mesh(path, mesh))
+      continue;
+    double e = 0;
+    for (Mesh::Edge_index edge : mesh.edges())
+      e += std::sqrt(CGAL::squared_distance(mesh.point(mesh.vertex(edge, 0)),
+                                            mesh.point(mesh.vertex(edge, 1))));
+    e /= double(mesh.number_of_edges());
+    const auto lights = HL::default_light_setup(mesh, HLP::number_of_lines(30));
+    std::mt19937 rng(5);
+    std::uniform_int_distribution<std::uint32_t> pick(0,
+                                                      std::uint32_t(mesh.number_of_vertices() - 1));
+    for (int k = 0; k < 8; ++k) {
+      const Mesh::Vertex_index centre(pick(rng));
+      SCOPED_TRACE(std::string(stem) + " v" + std::to_string(std::size_t(centre)));
+      std::set<Mesh::Vertex_index> within{centre};
+      std::vector<Mesh::Vertex_index> front{centre};
+      for (int ring = 0; ring < 10; ++ring) {
+        std::vector<Mesh::Vertex_index> next;
+        for (Mesh::Vertex_index v : front)
+          for (Mesh::Vertex_index u : CGAL::vertices_around_target(mesh.halfedge(v), mesh))
+            if (within.insert(u).second)
+              next.push_back(u);
+        front.swap(next);
+      }
+      std::vector<Mesh::Face_index> region;
+      for (Mesh::Face_index f : mesh.faces()) {
+        bool inside = true;
+        for (Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+          inside = inside && within.count(v) != 0;
+        if (inside)
+          region.push_back(f);
+      }
+      std::vector<Mesh::Vertex_index> movable;
+      HL::movable_vertices(mesh, region, std::back_inserter(movable));
+      if (movable.empty())
+        continue;
+      Mesh ours = mesh, pmp = mesh;
+      HL::Fairing_report report;
+      ASSERT_NO_THROW(report = CGAL::fair_with_highlight_lines(ours, region, lights));
+      EXPECT_LE(report.iterations, max_iterations);
+      EXPECT_TRUE(all_finite(ours));
+      EXPECT_EQ(HB::count_moved_vertices_outside(ours, mesh, movable), 0u);
+      EXPECT_TRUE(test::flipped_faces(mesh, ours).empty());
+      ASSERT_TRUE(CGAL::Polygon_mesh_processing::fair(pmp, movable));
+      double ours_sum = 0, pmp_sum = 0;
+      for (Mesh::Vertex_index v : movable) {
+        const double moved = CGAL::squared_distance(mesh.point(v), ours.point(v));
+        ours_sum += moved;
+        pmp_sum += CGAL::squared_distance(mesh.point(v), pmp.point(v));
+        largest_move = (std::max)(largest_move, std::sqrt(moved) / e);
+      }
+      ASSERT_GT(pmp_sum, 0);
+      ratios.push_back(std::sqrt(ours_sum / pmp_sum));
+    }
+  }
+  if (ratios.empty())
+    GTEST_SKIP() << "no mesh of " << HIGHLIGHT_LINES_SHARED_DATA_DIR;
+  std::sort(ratios.begin(), ratios.end());
+  EXPECT_LT(ratios[ratios.size() / 2], 0.9);
+  EXPECT_LT(largest_move, 8.0);
 }
 
 } // namespace
