@@ -3,7 +3,7 @@
 // same regions, moving the same vertices.
 //
 //   benchmark_real_dents [--table] [--seed N] [--centres N] [--repetitions N] [--mesh STEM]
-//                        [--dump DIR] [--jitter J] [--from-truth] [--far-grid N]
+//                        [--dump DIR] [--jitter J] [--from-truth] [--far-grid N] [--anywhere N]
 //
 // The table mode is the only mode (`--table` is accepted and is the default): one Markdown
 // table per case, then two summary tables (one row per method): over all the cases, and over
@@ -46,6 +46,14 @@
 // dent. A method that ends at its floor on the dented input has removed the whole dent; what
 // remains is the distance between the fair surface it settles on and the real surface.
 //
+// The floor anywhere: `--anywhere N` replaces the table by one row per mesh: N seeded vertices
+// (`--seed`), anywhere on the mesh (rough, curved and creased parts included), each the centre
+// of the faces within 10 rings, faired as they are (no dent, the default light setup of the
+// whole mesh with 30 lines) by ours (the default), ours_willmore and pmp_fair. Every move is a
+// change nobody asked for: the row gives the medians of the RMS move of the movable vertices in
+// ē (the mesh's mean edge length), the regions where ours moves more than pmp_fair, and the tail:
+// the regions where ours' largest move exceeds both 2 ē and twice pmp_fair's.
+//
 // Methods, each on a fresh copy of the dented mesh:
 //   pmp_fair     CGAL::Polygon_mesh_processing::fair(mesh, movable vertices), default
 //                parameters (bi-Laplacian, cotangent weights; continuity 1)
@@ -79,6 +87,7 @@
 #include "real_dent_cases.h"
 #include "surface_diffusion_flow.h"
 
+#include <CGAL/Highlight_lines/default_light_setup.h>
 #include <CGAL/Highlight_lines/fairing_building_blocks.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/fair.h>
@@ -124,7 +133,8 @@ struct Options
   std::string only_mesh, dump_dir;
   double jitter = 0; // in ē_g
   bool from_truth = false;
-  int far_grid = 0; // cells per side of the grid added far away
+  int far_grid = 0;         // cells per side of the grid added far away
+  std::size_t anywhere = 0; // regions per mesh of the --anywhere mode (0: the table)
 };
 
 // Appends an n x n grid of triangles beyond the bounding box of `mesh` (faces and vertices get
@@ -507,14 +517,86 @@ bool parse(int argc, char** argv, Options& options)
       options.from_truth = true;
     else if (a == "--far-grid")
       options.far_grid = std::stoi(value());
+    else if (a == "--anywhere")
+      options.anywhere = std::size_t(std::stoul(value()));
     else {
       std::cerr << "usage: benchmark_real_dents [--table] [--seed N] [--centres N] "
                    "[--repetitions N] [--mesh STEM] [--dump DIR] [--jitter J] [--from-truth] "
-                   "[--far-grid N]\n";
+                   "[--far-grid N] [--anywhere N]\n";
       return false;
     }
   }
   return true;
+}
+
+// --anywhere N: the undented regions of every mesh (see the file comment).
+void run_anywhere(std::ostream& out, const Options& options)
+{
+  out << "# Undented regions anywhere (" << options.anywhere
+      << " per mesh, faces within 10 rings of a seeded vertex, seed " << options.seed
+      << "): RMS move of the movable vertices / ē, medians\n\n"
+      << "| mesh | regions | ours | pmp_fair | ours_willmore | ours moves more than pmp_fair | "
+         "tail: ours > 2 ē and > 2 x pmp_fair | ours' largest move / ē |\n"
+      << "|---|---|---|---|---|---|---|---|\n";
+  auto median = [](std::vector<double> x) {
+    std::sort(x.begin(), x.end());
+    return x.empty() ? 0.0 : x[x.size() / 2];
+  };
+  for (const char* stem : {"beetle", "bunny", "camelhead", "fandisk", "rocker-arm", "spot"}) {
+    if (!options.only_mesh.empty() && options.only_mesh != stem)
+      continue;
+    const std::string path = std::string(HIGHLIGHT_LINES_SHARED_DATA_DIR) + "/" + stem + ".off";
+    Mesh mesh;
+    if (!std::ifstream(path) || !CGAL::IO::read_polygon_mesh(path, mesh) || mesh.is_empty()) {
+      out << "| " << stem << " | cannot read " << path << " | | | | | | |\n";
+      continue;
+    }
+    const double e = HB::real_dent_detail::global_mean_edge_length(mesh);
+    const auto lights = HL::default_light_setup(mesh, HLP::number_of_lines(30));
+    std::vector<double> ours_rms, pmp_rms, willmore_rms;
+    std::size_t more = 0, tail = 0;
+    double largest = 0;
+    for (const vertex_descriptor centre :
+         HB::seeded_vertices(mesh, options.anywhere, options.seed)) {
+      const std::vector<Mesh::Face_index> region = HB::faces_within_rings(mesh, centre, 10);
+      std::vector<vertex_descriptor> movable;
+      HL::movable_vertices(mesh, region, std::back_inserter(movable));
+      if (movable.empty())
+        continue;
+      Mesh ours = mesh, willmore = mesh, pmp = mesh;
+      try {
+        CGAL::fair_with_highlight_lines(ours, region, lights);
+        CGAL::fair_with_highlight_lines(willmore, region, lights,
+                                        HLP::fairness_energy(HL::Fairness_energy::WILLMORE));
+      } catch (const std::exception& ex) {
+        out << "| " << stem << " | v" << std::size_t(centre) << ": " << ex.what()
+            << " | | | | | | |\n";
+        continue;
+      }
+      CGAL::Polygon_mesh_processing::fair(pmp, movable);
+      double sums[3] = {0, 0, 0}, largest_ours = 0, largest_pmp = 0;
+      for (vertex_descriptor v : movable) {
+        const double moves[3] = {CGAL::squared_distance(mesh.point(v), ours.point(v)),
+                                 CGAL::squared_distance(mesh.point(v), pmp.point(v)),
+                                 CGAL::squared_distance(mesh.point(v), willmore.point(v))};
+        for (int m = 0; m < 3; ++m)
+          sums[m] += moves[m];
+        largest_ours = (std::max)(largest_ours, std::sqrt(moves[0]));
+        largest_pmp = (std::max)(largest_pmp, std::sqrt(moves[1]));
+      }
+      const double n = double(movable.size());
+      ours_rms.push_back(std::sqrt(sums[0] / n) / e);
+      pmp_rms.push_back(std::sqrt(sums[1] / n) / e);
+      willmore_rms.push_back(std::sqrt(sums[2] / n) / e);
+      more += sums[0] > sums[1] ? 1 : 0;
+      tail += largest_ours > 2 * e && largest_ours > 2 * largest_pmp ? 1 : 0;
+      largest = (std::max)(largest, largest_ours / e);
+    }
+    out << "| " << stem << " | " << ours_rms.size() << " | " << fixed(median(ours_rms), 3) << " | "
+        << fixed(median(pmp_rms), 3) << " | " << fixed(median(willmore_rms), 3) << " | " << more
+        << " | " << tail << " | " << fixed(largest, 2) << " |\n";
+    out.flush();
+  }
 }
 
 } // namespace
@@ -524,6 +606,10 @@ int main(int argc, char** argv)
   Options options;
   if (!parse(argc, argv, options))
     return 2;
+  if (options.anywhere > 0) {
+    run_anywhere(std::cout, options);
+    return 0;
+  }
   const auto start = std::chrono::steady_clock::now();
   std::ostream& out = std::cout;
   out << "# Dents in real meshes (seed " << options.seed << ", up to " << options.centres

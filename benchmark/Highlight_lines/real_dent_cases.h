@@ -682,6 +682,46 @@ inline std::vector<Real_dent_case> make_real_dent_cases(const Dent_mesh& mesh,
   return cases;
 }
 
+/// A region of the mesh as it is, anywhere on it (no patch selection, no dent): the faces whose
+/// three vertices lie within `rings` edges of `centre`.
+inline std::vector<Dent_mesh::Face_index>
+faces_within_rings(const Dent_mesh& mesh, Dent_mesh::Vertex_index centre, int rings)
+{
+  std::set<Dent_mesh::Vertex_index> within{centre};
+  std::vector<Dent_mesh::Vertex_index> front{centre};
+  for (int ring = 0; ring < rings; ++ring) {
+    std::vector<Dent_mesh::Vertex_index> next;
+    for (Dent_mesh::Vertex_index v : front)
+      for (Dent_mesh::Vertex_index u : CGAL::vertices_around_target(mesh.halfedge(v), mesh))
+        if (within.insert(u).second)
+          next.push_back(u);
+    front.swap(next);
+  }
+  std::vector<Dent_mesh::Face_index> region;
+  for (Dent_mesh::Face_index f : mesh.faces()) {
+    bool inside = true;
+    for (Dent_mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      inside = inside && within.count(v) != 0;
+    if (inside)
+      region.push_back(f);
+  }
+  return region;
+}
+
+/// `count` vertices drawn uniformly with std::mt19937(seed) (repeats possible): the centres of
+/// the undented regions of benchmark_real_dents --anywhere and of the tests.
+inline std::vector<Dent_mesh::Vertex_index> seeded_vertices(const Dent_mesh& mesh,
+                                                            std::size_t count, std::uint32_t seed)
+{
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<std::uint32_t> pick(0,
+                                                    std::uint32_t(mesh.number_of_vertices() - 1));
+  std::vector<Dent_mesh::Vertex_index> centres;
+  for (std::size_t k = 0; k < count; ++k)
+    centres.push_back(Dent_mesh::Vertex_index(pick(rng)));
+  return centres;
+}
+
 /// Faces of `faces` (of two meshes of the same connectivity) whose normal turned by more than
 /// 90° from `reference`: the dot product of the two cross products is <= 0 (a face that became
 /// degenerate counts). Faces degenerate in `reference` are not counted.

@@ -30,7 +30,6 @@
 #include <fstream>
 #include <functional>
 #include <iterator>
-#include <random>
 #include <set>
 #include <sstream>
 #include <string>
@@ -439,11 +438,7 @@ TEST(RealRegion, TheDefaultEnergyDoesNotDigAPocketIntoANarrowPart)
   std::vector<Mesh::Vertex_index> movable;
   HL::movable_vertices(mesh, region, std::back_inserter(movable));
   ASSERT_EQ(movable.size(), 116u);
-  double e = 0;
-  for (Mesh::Edge_index edge : mesh.edges())
-    e += std::sqrt(
-        CGAL::squared_distance(mesh.point(mesh.vertex(edge, 0)), mesh.point(mesh.vertex(edge, 1))));
-  e /= double(mesh.number_of_edges());
+  const double e = HB::real_dent_detail::global_mean_edge_length(mesh);
   const auto lights = HL::default_light_setup(mesh, HLP::number_of_lines(30));
 
   Mesh faired = mesh;
@@ -473,36 +468,11 @@ TEST(RealRegion, FairingUndentedRegionsChangesThemLessThanPMPFair)
     const std::string path = std::string(HIGHLIGHT_LINES_SHARED_DATA_DIR) + "/" + stem + ".off";
     if (!std::ifstream(path) || !CGAL::IO::read_polygon_mesh(path, mesh))
       continue;
-    double e = 0;
-    for (Mesh::Edge_index edge : mesh.edges())
-      e += std::sqrt(CGAL::squared_distance(mesh.point(mesh.vertex(edge, 0)),
-                                            mesh.point(mesh.vertex(edge, 1))));
-    e /= double(mesh.number_of_edges());
+    const double e = HB::real_dent_detail::global_mean_edge_length(mesh);
     const auto lights = HL::default_light_setup(mesh, HLP::number_of_lines(30));
-    std::mt19937 rng(5);
-    std::uniform_int_distribution<std::uint32_t> pick(0,
-                                                      std::uint32_t(mesh.number_of_vertices() - 1));
-    for (int k = 0; k < 8; ++k) {
-      const Mesh::Vertex_index centre(pick(rng));
+    for (const Mesh::Vertex_index centre : HB::seeded_vertices(mesh, 8, 5)) {
       SCOPED_TRACE(std::string(stem) + " v" + std::to_string(std::size_t(centre)));
-      std::set<Mesh::Vertex_index> within{centre};
-      std::vector<Mesh::Vertex_index> front{centre};
-      for (int ring = 0; ring < 10; ++ring) {
-        std::vector<Mesh::Vertex_index> next;
-        for (Mesh::Vertex_index v : front)
-          for (Mesh::Vertex_index u : CGAL::vertices_around_target(mesh.halfedge(v), mesh))
-            if (within.insert(u).second)
-              next.push_back(u);
-        front.swap(next);
-      }
-      std::vector<Mesh::Face_index> region;
-      for (Mesh::Face_index f : mesh.faces()) {
-        bool inside = true;
-        for (Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
-          inside = inside && within.count(v) != 0;
-        if (inside)
-          region.push_back(f);
-      }
+      const std::vector<Mesh::Face_index> region = HB::faces_within_rings(mesh, centre, 10);
       std::vector<Mesh::Vertex_index> movable;
       HL::movable_vertices(mesh, region, std::back_inserter(movable));
       if (movable.empty())
