@@ -470,7 +470,8 @@ inline double curvature_variation_value(const Frozen_curvature_variation& frozen
 // row m (same order as frozen.weights.energy_vertices). H_m = Σ_k w_mk (P_m - P_k) · N_m with
 // the frozen stencil w (the cotangent weights or the fit's) and N_m frozen, so
 // H = B x + H⁰ with B_mv = s (d_v · N_m), s = Σ_k w_mk if v = m, -w_mv if v is in the stencil. With
-// L = Σ_edges ℓ² c_ij (e_i - e_j)(e_i - e_j)ᵀ, the weighted Laplacian of the edges, E = (B x + H⁰)ᵀ
+// L = Σ_edges ℓ² c_ij (e_i - e_j)(e_i - e_j)ᵀ + Σ_{i in R} μ A_i e_i e_iᵀ, the weighted Laplacian
+// of the edges plus the mean curvature term on its diagonal, E = (B x + H⁰)ᵀ
 // L (B x + H⁰): the matrix is 2 Bᵀ (L B), built row by row with a dense accumulator, which costs a
 // third of the flops of summing each edge's outer product and hands the sink one value per entry
 // instead of about ten.
@@ -509,7 +510,8 @@ double add_curvature_variation_quadratic(const Frozen_curvature_variation& froze
     b_start[m + 1] = int(b_variable.size());
   }
 
-  // The edges (each once) with their weights ℓ² c_ij; L's diagonal; E(0) = Σ ω (H_i - H_j)².
+  // The edges (each once) with their weights ℓ² c_ij and the terms μ A_i of R; L's diagonal;
+  // E(0).
   struct Edge
   {
     int i, j;
@@ -529,7 +531,7 @@ double add_curvature_variation_quadratic(const Frozen_curvature_variation& froze
     degree[std::size_t(i)] += weight;
     r0 += weight * H[std::size_t(i)] * H[std::size_t(i)];
   });
-  // L's off-diagonal entries by row (-ω per edge, both ways).
+  // L's off-diagonal entries by row (-ω per edge, both ways); `degree` is its diagonal.
   std::vector<int> l_start(rows + 1, 0);
   for (const Edge& e : edges) {
     ++l_start[std::size_t(e.i) + 1];
