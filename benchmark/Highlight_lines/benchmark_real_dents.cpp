@@ -545,10 +545,9 @@ void run_anywhere(std::ostream& out, const Options& options)
   for (const char* stem : {"beetle", "bunny", "camelhead", "fandisk", "rocker-arm", "spot"}) {
     if (!options.only_mesh.empty() && options.only_mesh != stem)
       continue;
-    const std::string path = std::string(HIGHLIGHT_LINES_SHARED_DATA_DIR) + "/" + stem + ".off";
     Mesh mesh;
-    if (!std::ifstream(path) || !CGAL::IO::read_polygon_mesh(path, mesh) || mesh.is_empty()) {
-      out << "| " << stem << " | cannot read " << path << " | | | | | | |\n";
+    if (!HB::read_shared_mesh(stem, mesh)) {
+      out << "| " << stem << " | cannot read " << HB::shared_mesh_path(stem) << " | | | | | | |\n";
       continue;
     }
     const double e = HB::real_dent_detail::global_mean_edge_length(mesh);
@@ -630,10 +629,9 @@ int main(int argc, char** argv)
   for (const char* stem : {"beetle", "bunny", "camelhead", "fandisk", "rocker-arm", "spot"}) {
     if (!options.only_mesh.empty() && options.only_mesh != stem)
       continue;
-    const std::string path = std::string(HIGHLIGHT_LINES_SHARED_DATA_DIR) + "/" + stem + ".off";
     Mesh mesh;
-    if (!std::ifstream(path) || !CGAL::IO::read_polygon_mesh(path, mesh) || mesh.is_empty()) {
-      out << "\n## " << stem << ": cannot read " << path << ", skipped\n";
+    if (!HB::read_shared_mesh(stem, mesh)) {
+      out << "\n## " << stem << ": cannot read " << HB::shared_mesh_path(stem) << ", skipped\n";
       continue;
     }
     const auto making = std::chrono::steady_clock::now();

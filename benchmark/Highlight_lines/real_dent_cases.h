@@ -91,6 +91,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Highlight_lines/Light_setup.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/compute_highlight_lines.h>
@@ -102,6 +103,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <fstream>
 #include <limits>
 #include <random>
 #include <set>
@@ -681,6 +683,21 @@ inline std::vector<Real_dent_case> make_real_dent_cases(const Dent_mesh& mesh,
   }
   return cases;
 }
+
+#ifdef HIGHLIGHT_LINES_SHARED_DATA_DIR
+/// The path of a mesh of the developers' test set: HIGHLIGHT_LINES_SHARED_DATA_DIR/STEM.off.
+inline std::string shared_mesh_path(const std::string& stem)
+{
+  return std::string(HIGHLIGHT_LINES_SHARED_DATA_DIR) + "/" + stem + ".off";
+}
+
+/// Reads that mesh into `mesh`; false if the file is missing, unreadable or empty.
+inline bool read_shared_mesh(const std::string& stem, Dent_mesh& mesh)
+{
+  const std::string path = shared_mesh_path(stem);
+  return std::ifstream(path) && CGAL::IO::read_polygon_mesh(path, mesh) && !mesh.is_empty();
+}
+#endif
 
 /// A region of the mesh as it is, anywhere on it (no patch selection, no dent): the faces whose
 /// three vertices lie within `rings` edges of `centre`.

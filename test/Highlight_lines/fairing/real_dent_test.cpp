@@ -412,9 +412,8 @@ TEST(RealDentTail, ExtrapolatingASlowTailEndsWithinEpsilonOfTheLimit)
 TEST(RealRegion, TheDefaultEnergyDoesNotDigAPocketIntoANarrowPart)
 {
   Mesh mesh;
-  const std::string path = std::string(HIGHLIGHT_LINES_SHARED_DATA_DIR) + "/camelhead.off";
-  if (!std::ifstream(path) || !CGAL::IO::read_polygon_mesh(path, mesh))
-    GTEST_SKIP() << path << " not found";
+  if (!HB::read_shared_mesh("camelhead", mesh))
+    GTEST_SKIP() << HB::shared_mesh_path("camelhead") << " not found";
   const std::pair<std::uint32_t, std::uint32_t> face_ranges[] = {
       {78, 79},       {81, 82},       {94, 94},       {121, 122},     {387, 389},
       {392, 392},     {406, 407},     {512, 513},     {530, 533},     {535, 535},
@@ -465,8 +464,7 @@ TEST(RealRegion, FairingUndentedRegionsChangesThemLessThanPMPFair)
   double largest_move = 0;
   for (const char* stem : {"beetle", "bunny", "camelhead", "fandisk", "rocker-arm", "spot"}) {
     Mesh mesh;
-    const std::string path = std::string(HIGHLIGHT_LINES_SHARED_DATA_DIR) + "/" + stem + ".off";
-    if (!std::ifstream(path) || !CGAL::IO::read_polygon_mesh(path, mesh))
+    if (!HB::read_shared_mesh(stem, mesh))
       continue;
     const double e = HB::real_dent_detail::global_mean_edge_length(mesh);
     const auto lights = HL::default_light_setup(mesh, HLP::number_of_lines(30));
