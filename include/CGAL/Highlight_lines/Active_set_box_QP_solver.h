@@ -5,6 +5,7 @@
 #define CGAL_HIGHLIGHT_LINES_ACTIVE_SET_BOX_QP_SOLVER_H
 
 #include <CGAL/Highlight_lines/Box_QP_report.h>
+#include <CGAL/Highlight_lines/internal/uninitialized_array.h>
 
 #include <Eigen/Dense>
 #include <Eigen/OrderingMethods>
@@ -184,8 +185,13 @@ public:
     const int n = static_cast<int>(n_);
     // The upper triangle with duplicates summed, by columns, rows in no particular order;
     // the diagonal entry first.
-    std::vector<int> upper_start(n_ + 1, 0), upper_rows;
-    std::vector<double> upper_values;
+    // The work arrays are members: at 10^5 variables they hold millions of entries, and
+    // allocating them afresh for each program of a fairing faults their pages in each time.
+    std::vector<int>& upper_rows = upper_rows_;
+    std::vector<double>& upper_values = upper_values_;
+    std::vector<int> upper_start(n_ + 1, 0);
+    upper_rows.clear();
+    upper_values.clear();
     if (dense_)
       gather_dense_upper(upper_start, upper_rows, upper_values);
     else
@@ -298,7 +304,7 @@ private:
   // The triplets' upper triangle by columns, each entry summed in the order of the set_P()
   // calls: a counting sort, then a marker array.
   void gather_triplet_upper(std::vector<int>& upper_start, std::vector<int>& upper_rows,
-                            std::vector<double>& upper_values) const
+                            std::vector<double>& upper_values)
   {
     const int n = static_cast<int>(n_);
     std::vector<int> start(n_ + 1, 0);
@@ -306,7 +312,8 @@ private:
       ++start[t.col() + 1];
     for (int j = 0; j < n; ++j)
       start[j + 1] += start[j];
-    std::vector<std::pair<int, double>> by_column(upper_triplets_.size());
+    std::vector<std::pair<int, double>>& by_column = by_column_;
+    by_column.resize(upper_triplets_.size());
     {
       std::vector<int> next(start.begin(), start.end() - 1);
       for (const Triplet& t : upper_triplets_)
@@ -363,6 +370,9 @@ private:
   std::size_t n_ = 0;
   static constexpr std::size_t dense_size_limit = 512; // 1 MiB of sums at most
   std::vector<Triplet> upper_triplets_;
+  std::vector<std::pair<int, double>> by_column_; // work arrays of assemble()
+  std::vector<int> upper_rows_;
+  std::vector<double> upper_values_;
   bool dense_ = false;
   std::vector<double> dense_values_; // column j at j (j + 1) / 2, rows 0 to j
   std::vector<unsigned char> dense_present_;
@@ -604,7 +614,7 @@ public:
       panel_start_[s + 1] = panel_start_[s] + static_cast<std::size_t>(r) * k;
       factorization_flops_ += double(r) * k * k + double(r - k) * (r - k) * k;
     }
-    L_.resize(panel_start_[supernodes]);
+    L_.resize(panel_start_[supernodes]); // factorize() writes every panel before reading it
     solve_flops_ = 4. * double(panel_start_[supernodes]) + 4. * n;
   }
 
@@ -930,7 +940,8 @@ private:
   int max_below_ = 0; // the most rows below a supernode
   std::vector<int> assembly_start_, assembly_source_, diagonal_source_;
   std::vector<std::size_t> assembly_position_, panel_start_;
-  std::vector<double> L_, D_;
+  Uninitialized_array<double> L_;
+  std::vector<double> D_;
   std::vector<char> is_zero_pivot_;
   int zero_pivots_ = 0, negative_pivot_ = -1;
   double factorization_flops_ = 0., solve_flops_ = 0.;
@@ -1337,6 +1348,10 @@ private:
       ldlt_.analyze(n, analyzed_outer_.data(), analyzed_inner_.data(), analyzed_ordering_);
     }
     is_analyzed(Q, &analyzed_position_); // contained by construction: fills the positions
+    // The factor of the last matrix is laid out for the old analysis: it can precondition
+    // nothing any more.
+    has_factorization_ = false;
+    factorization_is_stale_ = false;
   }
 
   // Factorises the matrix K_F that is P on the free variables F = {i : is_free[i]} and
