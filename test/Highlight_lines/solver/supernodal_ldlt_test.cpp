@@ -167,6 +167,28 @@ TEST(SupernodalLDLT, RefactorisingNewValuesReusesTheAnalysis)
   EXPECT_LE((B * x - b).norm(), 1e-10 * b.norm());
 }
 
+// The factor's storage is reused and left uninitialised between analyses: each factorisation
+// must write all of it, whatever an earlier, larger or smaller, factor left there; and a copy
+// must solve as the original.
+TEST(SupernodalLDLT, ReanalysingOtherPatternsAndCopyingGiveTheSameSolutions)
+{
+  std::mt19937 random(7);
+  Supernodal_LDLT ldlt;
+  for (int n : {300, 3000, 40, 3000}) { // a chain with a few shortcuts: moderate fill
+    const Sparse_matrix A = random_graph_matrix(random, n, n / 20, 0.1, true);
+    ASSERT_EQ(factorize(ldlt, A, amd_ordering(A)), Supernodal_LDLT::Inertia::POSITIVE_DEFINITE)
+        << "n = " << n;
+    const Eigen::VectorXd b = Eigen::VectorXd::Random(n);
+    Eigen::VectorXd x = b;
+    ldlt.solve(x);
+    EXPECT_LE((A * x - b).norm(), 1e-10 * b.norm()) << "n = " << n;
+    const Supernodal_LDLT copy = ldlt;
+    Eigen::VectorXd y = b;
+    copy.solve(y);
+    EXPECT_EQ(x, y) << "n = " << n;
+  }
+}
+
 TEST(SupernodalLDLT, DetectsIndefiniteMatrices)
 {
   std::mt19937 random(3);
