@@ -11,6 +11,7 @@
 #include <functional>
 #include <numeric>
 #include <random>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -169,7 +170,7 @@ TEST(SupernodalLDLT, RefactorisingNewValuesReusesTheAnalysis)
 
 // The factor's storage is reused and left uninitialised between analyses: each factorisation
 // must write all of it, whatever an earlier, larger or smaller, factor left there; and a copy
-// must solve as the original.
+// or a move must solve as the original.
 TEST(SupernodalLDLT, ReanalysingOtherPatternsAndCopyingGiveTheSameSolutions)
 {
   std::mt19937 random(7);
@@ -182,10 +183,14 @@ TEST(SupernodalLDLT, ReanalysingOtherPatternsAndCopyingGiveTheSameSolutions)
     Eigen::VectorXd x = b;
     ldlt.solve(x);
     EXPECT_LE((A * x - b).norm(), 1e-10 * b.norm()) << "n = " << n;
-    const Supernodal_LDLT copy = ldlt;
+    Supernodal_LDLT copy = ldlt;
     Eigen::VectorXd y = b;
     copy.solve(y);
     EXPECT_EQ(x, y) << "n = " << n;
+    const Supernodal_LDLT moved = std::move(copy);
+    Eigen::VectorXd z = b;
+    moved.solve(z);
+    EXPECT_EQ(x, z) << "n = " << n;
   }
 }
 

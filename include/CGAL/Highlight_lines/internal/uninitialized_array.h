@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <memory>
 #include <type_traits>
+#include <utility>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -32,8 +33,17 @@ class Uninitialized_array
 public:
   Uninitialized_array() = default;
   Uninitialized_array(const Uninitialized_array& other) { *this = other; }
-  Uninitialized_array(Uninitialized_array&&) noexcept = default;
-  Uninitialized_array& operator=(Uninitialized_array&&) noexcept = default;
+  Uninitialized_array(Uninitialized_array&& other) noexcept { *this = std::move(other); }
+  Uninitialized_array& operator=(Uninitialized_array&& other) noexcept
+  {
+    if (this != &other) {
+      values_ = std::move(other.values_);
+      size_ = other.size_;
+      capacity_ = other.capacity_;
+      other.size_ = other.capacity_ = 0; // empty, not a size without storage
+    }
+    return *this;
+  }
   Uninitialized_array& operator=(const Uninitialized_array& other)
   {
     if (this != &other) {
