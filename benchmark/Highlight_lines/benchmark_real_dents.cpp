@@ -538,11 +538,7 @@ void run_anywhere(std::ostream& out, const Options& options)
       << "| mesh | regions | ours | pmp_fair | ours_willmore | ours moves more than pmp_fair | "
          "tail: ours > 2 ē and > 2 x pmp_fair | ours' largest move / ē |\n"
       << "|---|---|---|---|---|---|---|---|\n";
-  auto median = [](std::vector<double> x) {
-    std::sort(x.begin(), x.end());
-    return x.empty() ? 0.0 : x[x.size() / 2];
-  };
-  for (const char* stem : {"beetle", "bunny", "camelhead", "fandisk", "rocker-arm", "spot"}) {
+  for (const char* stem : HB::shared_mesh_stems()) {
     if (!options.only_mesh.empty() && options.only_mesh != stem)
       continue;
     Mesh mesh;
@@ -626,7 +622,7 @@ int main(int argc, char** argv)
   std::size_t cases_total = 0, cases_with_slivers = 0, cases_with_folds = 0, most_slivers = 0,
               most_folded = 0;
   std::string most_slivers_case, most_folded_case;
-  for (const char* stem : {"beetle", "bunny", "camelhead", "fandisk", "rocker-arm", "spot"}) {
+  for (const char* stem : HB::shared_mesh_stems()) {
     if (!options.only_mesh.empty() && options.only_mesh != stem)
       continue;
     Mesh mesh;

@@ -684,6 +684,14 @@ inline std::vector<Real_dent_case> make_real_dent_cases(const Dent_mesh& mesh,
   return cases;
 }
 
+/// The stems of the meshes of the developers' test set (../shared/data), in report order.
+inline const std::array<const char*, 6>& shared_mesh_stems()
+{
+  static const std::array<const char*, 6> stems = {"beetle",  "bunny",      "camelhead",
+                                                   "fandisk", "rocker-arm", "spot"};
+  return stems;
+}
+
 #ifdef HIGHLIGHT_LINES_SHARED_DATA_DIR
 /// The path of a mesh of the developers' test set: HIGHLIGHT_LINES_SHARED_DATA_DIR/STEM.off.
 inline std::string shared_mesh_path(const std::string& stem)

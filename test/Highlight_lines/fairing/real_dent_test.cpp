@@ -158,10 +158,9 @@ protected:
   void SetUp() override
   {
     stem = GetParam();
-    const std::string path = std::string(HIGHLIGHT_LINES_SHARED_DATA_DIR) + "/" + stem + ".off";
-    if (!std::ifstream(path))
-      GTEST_SKIP() << path << " not found";
-    ASSERT_TRUE(CGAL::IO::read_polygon_mesh(path, mesh) && !mesh.is_empty()) << path;
+    if (!std::ifstream(HB::shared_mesh_path(stem)))
+      GTEST_SKIP() << HB::shared_mesh_path(stem) << " not found";
+    ASSERT_TRUE(HB::read_shared_mesh(stem, mesh)) << HB::shared_mesh_path(stem);
   }
 
   std::string stem;
@@ -294,9 +293,7 @@ TEST_P(RealDentTest, TheFirstProgramDeclaresEveryEntryOfTheLaterOnes)
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(RealDent, RealDentTest,
-                         ::testing::Values("beetle", "bunny", "camelhead", "fandisk", "rocker-arm",
-                                           "spot"),
+INSTANTIATE_TEST_SUITE_P(RealDent, RealDentTest, ::testing::ValuesIn(HB::shared_mesh_stems()),
                          [](const ::testing::TestParamInfo<const char*>& info) {
                            std::string name = info.param;
                            for (char& ch : name)
@@ -314,10 +311,9 @@ TEST(RealDentTail, StoppingOnTheGeometricTailEndsWithinEpsilonOfTheLimit)
 {
   const double epsilon = 1e-3;
   std::size_t cases = 0, stopped_on_the_tail = 0;
-  for (const char* stem : {"beetle", "bunny", "camelhead", "fandisk", "rocker-arm", "spot"}) {
+  for (const char* stem : HB::shared_mesh_stems()) {
     Mesh mesh;
-    const std::string path = std::string(HIGHLIGHT_LINES_SHARED_DATA_DIR) + "/" + stem + ".off";
-    if (!std::ifstream(path) || !CGAL::IO::read_polygon_mesh(path, mesh))
+    if (!HB::read_shared_mesh(stem, mesh))
       continue;
     HB::Real_dent_options options;
     options.max_centres = 2;
@@ -363,8 +359,7 @@ TEST(RealDentTail, ExtrapolatingASlowTailEndsWithinEpsilonOfTheLimit)
   bool any_mesh = false;
   for (const char* stem : {"bunny", "camelhead"}) {
     Mesh mesh;
-    const std::string path = std::string(HIGHLIGHT_LINES_SHARED_DATA_DIR) + "/" + stem + ".off";
-    if (!std::ifstream(path) || !CGAL::IO::read_polygon_mesh(path, mesh))
+    if (!HB::read_shared_mesh(stem, mesh))
       continue;
     any_mesh = true;
     HB::Real_dent_options options;
@@ -462,7 +457,7 @@ TEST(RealRegion, FairingUndentedRegionsChangesThemLessThanPMPFair)
 {
   std::vector<double> ratios;
   double largest_move = 0;
-  for (const char* stem : {"beetle", "bunny", "camelhead", "fandisk", "rocker-arm", "spot"}) {
+  for (const char* stem : HB::shared_mesh_stems()) {
     Mesh mesh;
     if (!HB::read_shared_mesh(stem, mesh))
       continue;
