@@ -4,7 +4,7 @@
 #ifndef CGAL_HIGHLIGHT_LINES_QUADRATIC_PROGRAM_TRAITS_BOX_QP_ADAPTER_H
 #define CGAL_HIGHLIGHT_LINES_QUADRATIC_PROGRAM_TRAITS_BOX_QP_ADAPTER_H
 
-#include <CGAL/Highlight_lines/Active_set_box_QP_solver.h>
+#include <CGAL/Highlight_lines/internal/qp/Box_QP_problem.h>
 #include <CGAL/Highlight_lines/Box_QP_report.h>
 
 #include <CGAL/number_utils.h>
@@ -168,8 +168,8 @@ private:
   Box_QP_status solve_with_traits(Eigen::VectorXd& x, Box_QP_report& report)
   {
     problem_.assemble();
-    const auto& Q = problem_.Q();
-    const auto& c = problem_.c();
+    const auto& P = problem_.P();
+    const auto& q = problem_.q();
     const auto& l = problem_.l();
     const auto& u = problem_.u();
     const std::size_t n = problem_.size();
@@ -184,14 +184,14 @@ private:
       }
 
     traits_.resize(n, n);
-    for (int column = 0; column < Q.outerSize(); ++column)
-      for (typename std::decay_t<decltype(Q)>::InnerIterator it(Q, column); it; ++it)
+    for (int column = 0; column < P.outerSize(); ++column)
+      for (typename std::decay_t<decltype(P)>::InnerIterator it(P, column); it; ++it)
         if (it.row() <= column)
           traits_.set_P(static_cast<std::size_t>(it.row()), static_cast<std::size_t>(column),
                         it.value());
     for (std::size_t i = 0; i < n; ++i) {
       const Eigen::Index k = static_cast<Eigen::Index>(i);
-      traits_.set_q(i, c[k]);
+      traits_.set_q(i, q[k]);
       traits_.set_A(i, i, 1.);
       traits_.set_l(i, l[k]);
       traits_.set_u(i, u[k]);

@@ -2,7 +2,7 @@
 // SimplicialLDLT on definite matrices, tells semidefinite and indefinite matrices apart, and
 // finds null-space directions of semidefinite ones.
 
-#include <CGAL/Highlight_lines/Active_set_box_QP_solver.h>
+#include <CGAL/Highlight_lines/internal/qp/Supernodal_LDLT.h>
 
 #include <Eigen/SparseCholesky>
 #include <gtest/gtest.h>

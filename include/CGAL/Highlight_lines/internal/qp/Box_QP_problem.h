@@ -1,0 +1,384 @@
+// Copyright (c) 2026 The Highlight_lines package authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_QP_BOX_QP_PROBLEM_H
+#define CGAL_HIGHLIGHT_LINES_INTERNAL_QP_BOX_QP_PROBLEM_H
+
+#include <CGAL/Highlight_lines/Box_QP_report.h>
+#include <CGAL/Highlight_lines/internal/qp/bucket_sort.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Highlight_lines {
+namespace internal {
+
+// The data of a bound-constrained QP  min 1/2 x^T P x + q^T x + r,  l <= x <= u,  gathered
+// through the setters of the BoxConstrainedQuadraticProgramSolver concept, with the input
+// checks and the evaluation of a point (KKT residual, objective) that every model reports in
+// the same way.
+class Box_QP_problem
+{
+public:
+  using Sparse_matrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+  using Triplet = Eigen::Triplet<double, int>;
+
+  void resize(std::size_t n)
+  {
+    n_ = n;
+    upper_triplets_.clear();
+    // A small problem sums P in place (a real dent's fairing, 100-300 variables, makes 3 to 7
+    // set_P() calls per entry); a large one collects triplets (n² sums would not fit).
+    dense_ = n <= dense_size_limit;
+    dense_values_.assign(dense_ ? n * (n + 1) / 2 : 0, 0.);
+    dense_present_.assign(dense_values_.size(), 0);
+    q_.setZero(static_cast<Eigen::Index>(n));
+    r_ = 0.;
+    l_.setConstant(static_cast<Eigen::Index>(n), -std::numeric_limits<double>::infinity());
+    u_.setConstant(static_cast<Eigen::Index>(n), std::numeric_limits<double>::infinity());
+    setter_error_.clear();
+    P_.resize(0, 0);
+  }
+
+  std::size_t size() const { return n_; }
+
+  // Only the upper triangle is read, so that a loop over all ordered pairs of a symmetric
+  // matrix gives every entry once.
+  void add_P(std::size_t i, std::size_t j, double value)
+  {
+    if (i > j)
+      return;
+    if (j >= n_) {
+      note_setter_error("set_P", i, j);
+      return;
+    }
+    if (dense_) {
+      const std::size_t at = j * (j + 1) / 2 + i;
+      dense_values_[at] += value;
+      dense_present_[at] = 1;
+    } else {
+      upper_triplets_.emplace_back(static_cast<int>(i), static_cast<int>(j), value);
+    }
+  }
+
+  void add_P(const Sparse_matrix& matrix)
+  {
+    if (static_cast<std::size_t>(matrix.rows()) != n_ ||
+        static_cast<std::size_t>(matrix.cols()) != n_) {
+      if (setter_error_.empty()) {
+        std::ostringstream os;
+        os << "set_P: the matrix is " << matrix.rows() << " x " << matrix.cols()
+           << " but the problem has " << n_ << " variables";
+        setter_error_ = os.str();
+      }
+      return;
+    }
+    if (!dense_)
+      upper_triplets_.reserve(upper_triplets_.size() + static_cast<std::size_t>(matrix.nonZeros()));
+    for (int col = 0; col < matrix.outerSize(); ++col)
+      for (Sparse_matrix::InnerIterator it(matrix, col); it; ++it)
+        add_P(static_cast<std::size_t>(it.row()), static_cast<std::size_t>(col), it.value());
+  }
+
+  void add_q(std::size_t i, double value)
+  {
+    if (i >= n_)
+      note_setter_error("set_q", i);
+    else
+      q_[static_cast<Eigen::Index>(i)] += value;
+  }
+
+  void add_r(double value) { r_ += value; }
+
+  void set_l(std::size_t i, double value)
+  {
+    if (i >= n_)
+      note_setter_error("set_l", i);
+    else
+      l_[static_cast<Eigen::Index>(i)] = value;
+  }
+
+  void set_u(std::size_t i, double value)
+  {
+    if (i >= n_)
+      note_setter_error("set_u", i);
+    else
+      u_[static_cast<Eigen::Index>(i)] = value;
+  }
+
+  // Checks the data in the order a user would fix it: indices, then values, then bounds.
+  Box_QP_status validate(std::string& message) const
+  {
+    std::ostringstream os;
+    if (!setter_error_.empty()) {
+      message = setter_error_;
+      return Box_QP_status::INVALID_INPUT;
+    }
+    for (const Triplet& t : upper_triplets_)
+      if (!std::isfinite(t.value())) {
+        os << "P(" << t.row() << ", " << t.col() << ") is " << t.value();
+        message = os.str();
+        return Box_QP_status::INVALID_INPUT;
+      }
+    for (std::size_t j = 0, at = 0; j < (dense_ ? n_ : 0); ++j)
+      for (std::size_t i = 0; i <= j; ++i, ++at)
+        if (!std::isfinite(dense_values_[at])) { // a sum is finite if its terms are
+          os << "P(" << i << ", " << j << ") is " << dense_values_[at];
+          message = os.str();
+          return Box_QP_status::INVALID_INPUT;
+        }
+    if (!std::isfinite(r_)) {
+      os << "r is " << r_;
+      message = os.str();
+      return Box_QP_status::INVALID_INPUT;
+    }
+    for (Eigen::Index i = 0; i < q_.size(); ++i) {
+      if (!std::isfinite(q_[i])) {
+        os << "q(" << i << ") is " << q_[i];
+        message = os.str();
+        return Box_QP_status::INVALID_INPUT;
+      }
+      if (std::isnan(l_[i]) || l_[i] == std::numeric_limits<double>::infinity()) {
+        os << "variable " << i << ": the lower bound is " << l_[i]
+           << " (allowed: a finite value or -infinity)";
+        message = os.str();
+        return Box_QP_status::INVALID_INPUT;
+      }
+      if (std::isnan(u_[i]) || u_[i] == -std::numeric_limits<double>::infinity()) {
+        os << "variable " << i << ": the upper bound is " << u_[i]
+           << " (allowed: a finite value or +infinity)";
+        message = os.str();
+        return Box_QP_status::INVALID_INPUT;
+      }
+    }
+    for (Eigen::Index i = 0; i < q_.size(); ++i)
+      if (l_[i] > u_[i]) {
+        os << "variable " << i << ": the lower bound " << l_[i] << " exceeds the upper bound "
+           << u_[i];
+        message = os.str();
+        return Box_QP_status::INFEASIBLE_BOUNDS;
+      }
+    return Box_QP_status::OPTIMAL;
+  }
+
+  // Builds the full symmetric matrix (both triangles, duplicates summed, every diagonal
+  // entry present even if zero: solvers replace the rows of active variables by their
+  // diagonal) and the norms the tolerances are relative to. Requires validate() to have
+  // succeeded. The upper triangle is gathered by columns with a counting sort and summed
+  // with a marker array; two transpositions then give the lower and the upper part of every
+  // column of P in increasing rows. Linear in the number of set_P() calls, which outnumber
+  // the entries several times in an assembly of local stencils.
+  void assemble()
+  {
+    const int n = static_cast<int>(n_);
+    // The upper triangle with duplicates summed, by columns, rows in no particular order;
+    // the diagonal entry first.
+    // The work arrays are members: at 10^5 variables they hold millions of entries, and
+    // allocating them afresh for each program of a fairing faults their pages in each time.
+    std::vector<int>& upper_rows = upper_rows_;
+    std::vector<double>& upper_values = upper_values_;
+    std::vector<int> upper_start(n_ + 1, 0);
+    upper_rows.clear();
+    upper_values.clear();
+    if (dense_)
+      gather_dense_upper(upper_start, upper_rows, upper_values);
+    else
+      gather_triplet_upper(upper_start, upper_rows, upper_values);
+    // Column j of P: the rows i < j (its strictly upper part), then the rows k >= j (the
+    // entries (j, k) of the upper triangle).
+    std::vector<int> upper_count(n_, 0), lower_count(n_, 0);
+    for (int j = 0; j < n; ++j) {
+      upper_count[j] = upper_start[j + 1] - upper_start[j] - 1;
+      for (int p = upper_start[j]; p < upper_start[j + 1]; ++p)
+        ++lower_count[upper_rows[p]];
+    }
+    P_.resize(n, n);
+    P_.resizeNonZeros(static_cast<Eigen::Index>(2 * upper_rows.size() - n_));
+    int* outer = P_.outerIndexPtr();
+    int* inner = P_.innerIndexPtr();
+    double* values = P_.valuePtr();
+    outer[0] = 0;
+    for (int j = 0; j < n; ++j)
+      outer[j + 1] = outer[j] + upper_count[j] + lower_count[j];
+    // Lower parts: visiting the columns k in increasing order appends the rows k of every
+    // column j <= k in increasing order.
+    std::vector<int> next(n_);
+    for (int j = 0; j < n; ++j)
+      next[j] = outer[j] + upper_count[j];
+    for (int k = 0; k < n; ++k)
+      for (int p = upper_start[k]; p < upper_start[k + 1]; ++p) {
+        const int j = upper_rows[p];
+        inner[next[j]] = k;
+        values[next[j]++] = upper_values[p];
+      }
+    // Upper parts: the mirror of the lower parts, visited by increasing column.
+    for (int j = 0; j < n; ++j)
+      next[j] = outer[j];
+    for (int j = 0; j < n; ++j)
+      for (int p = outer[j] + upper_count[j] + 1; p < outer[j + 1]; ++p) { // below the diagonal
+        const int k = inner[p];
+        inner[next[k]] = j;
+        values[next[k]++] = values[p];
+      }
+    diagonal_ = P_.diagonal();
+    Eigen::VectorXd row_sums = Eigen::VectorXd::Zero(n);
+    for (int col = 0; col < n; ++col)
+      for (Sparse_matrix::InnerIterator it(P_, col); it; ++it)
+        row_sums[it.row()] += std::abs(it.value());
+    P_norm_ = n > 0 ? row_sums.maxCoeff() : 0.;
+    q_norm_ = n > 0 ? q_.cwiseAbs().maxCoeff() : 0.;
+  }
+
+  const Sparse_matrix& P() const { return P_; }
+  const Eigen::VectorXd& q() const { return q_; }
+  const Eigen::VectorXd& l() const { return l_; }
+  const Eigen::VectorXd& u() const { return u_; }
+  const Eigen::VectorXd& diagonal() const { return diagonal_; }
+  double r() const { return r_; }
+  double P_norm() const { return P_norm_; }
+  double q_norm() const { return q_norm_; }
+
+  // The size of the terms a gradient at x is made of; KKT residuals are relative to it.
+  double gradient_scale(double x_norm) const
+  {
+    const double scale = q_norm_ + P_norm_ * x_norm;
+    return scale > 0. ? scale : 1.;
+  }
+
+  // A change of x below this size (relative tolerance 1) changes the gradient by less than
+  // the gradient scale: it is the unit in which closeness to a bound is judged.
+  double x_scale(double x_norm) const { return x_norm + (P_norm_ > 0. ? q_norm_ / P_norm_ : 0.); }
+
+  double objective(const Eigen::VectorXd& x, const Eigen::VectorXd& Px) const
+  {
+    return 0.5 * x.dot(Px) + q_.dot(x) + r_;
+  }
+
+  Eigen::VectorXd clamp(const Eigen::VectorXd& x) const { return x.cwiseMax(l_).cwiseMin(u_); }
+
+  // Projected gradient (see Box_QP_report) of a point within the bounds.
+  double kkt_residual(const Eigen::VectorXd& x, const Eigen::VectorXd& gradient) const
+  {
+    double residual = 0.;
+    for (Eigen::Index i = 0; i < x.size(); ++i) {
+      double projected = gradient[i];
+      if (l_[i] == u_[i])
+        projected = 0.;
+      else if (x[i] <= l_[i])
+        projected = std::min(projected, 0.);
+      else if (x[i] >= u_[i])
+        projected = std::max(projected, 0.);
+      residual = std::max(residual, std::abs(projected));
+    }
+    return residual;
+  }
+
+  // Fills everything of the report but the status, iterations, factorisations and message.
+  void evaluate(const Eigen::VectorXd& x, Box_QP_report& report) const
+  {
+    const Eigen::VectorXd Px = P_ * x;
+    const Eigen::VectorXd gradient = Px + q_;
+    report.kkt_residual = kkt_residual(x, gradient);
+    report.relative_kkt_residual =
+        report.kkt_residual / gradient_scale(x.size() > 0 ? x.cwiseAbs().maxCoeff() : 0.);
+    report.objective_value = objective(x, Px);
+    report.active_bounds = 0;
+    for (Eigen::Index i = 0; i < x.size(); ++i)
+      if (x[i] == l_[i] || x[i] == u_[i])
+        ++report.active_bounds;
+  }
+
+private:
+  // The triplets' upper triangle by columns, each entry summed in the order of the set_P()
+  // calls: a counting sort, then a marker array.
+  void gather_triplet_upper(std::vector<int>& upper_start, std::vector<int>& upper_rows,
+                            std::vector<double>& upper_values)
+  {
+    const int n = static_cast<int>(n_);
+    std::vector<int> start;
+    std::vector<std::pair<int, double>>& by_column = by_column_;
+    bucket_sort(
+        n,
+        [this](auto&& emit) {
+          for (const Triplet& t : upper_triplets_)
+            emit(t.col(), std::pair<int, double>(t.row(), t.value()));
+        },
+        start, by_column);
+    std::vector<int> slot(n_, -1);
+    upper_rows.reserve(by_column.size() / 2 + n_);
+    upper_values.reserve(upper_rows.capacity());
+    for (int j = 0; j < n; ++j) {
+      const int first = static_cast<int>(upper_rows.size());
+      upper_rows.push_back(j);
+      upper_values.push_back(0.);
+      slot[j] = first;
+      for (int p = start[j]; p < start[j + 1]; ++p) {
+        const int i = by_column[p].first;
+        if (slot[i] < first) {
+          slot[i] = static_cast<int>(upper_rows.size());
+          upper_rows.push_back(i);
+          upper_values.push_back(0.);
+        }
+        upper_values[slot[i]] += by_column[p].second;
+      }
+      upper_start[j + 1] = static_cast<int>(upper_rows.size());
+    }
+  }
+
+  // The same from the dense sums (the same values: each summed in the order of the calls).
+  void gather_dense_upper(std::vector<int>& upper_start, std::vector<int>& upper_rows,
+                          std::vector<double>& upper_values) const
+  {
+    for (std::size_t j = 0; j < n_; ++j) {
+      const std::size_t column = j * (j + 1) / 2;
+      upper_rows.push_back(static_cast<int>(j));
+      upper_values.push_back(dense_values_[column + j]);
+      for (std::size_t i = 0; i < j; ++i)
+        if (dense_present_[column + i]) {
+          upper_rows.push_back(static_cast<int>(i));
+          upper_values.push_back(dense_values_[column + i]);
+        }
+      upper_start[j + 1] = static_cast<int>(upper_rows.size());
+    }
+  }
+
+  void note_setter_error(const char* setter, std::size_t i, std::size_t j = 0)
+  {
+    if (!setter_error_.empty())
+      return; // the first error is the one to fix first
+    std::ostringstream os;
+    os << setter << ": index " << (i >= n_ ? i : j) << " is out of range (the problem has " << n_
+       << " variables)";
+    setter_error_ = os.str();
+  }
+
+  std::size_t n_ = 0;
+  static constexpr std::size_t dense_size_limit = 512; // 1 MiB of sums at most
+  std::vector<Triplet> upper_triplets_;
+  std::vector<std::pair<int, double>> by_column_; // work arrays of assemble()
+  std::vector<int> upper_rows_;
+  std::vector<double> upper_values_;
+  bool dense_ = false;
+  std::vector<double> dense_values_; // column j at j (j + 1) / 2, rows 0 to j
+  std::vector<unsigned char> dense_present_;
+  Eigen::VectorXd q_, l_, u_, diagonal_;
+  double r_ = 0.;
+  std::string setter_error_;
+  Sparse_matrix P_;
+  double P_norm_ = 0., q_norm_ = 0.;
+};
+
+} // namespace internal
+} // namespace Highlight_lines
+} // namespace CGAL
+
+#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_QP_BOX_QP_PROBLEM_H
