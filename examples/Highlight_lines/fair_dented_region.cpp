@@ -1,0 +1,86 @@
+// fair_with_highlight_lines() on a CGAL::Surface_mesh: a smooth dent is pressed into the mesh,
+// the faces around it are faired, and the faired mesh (and, if asked, the dented one) is written.
+//
+//   fair_dented_region [mesh.off] [faired.off] [dented.off]
+// Without a mesh, the bundled VW Beetle body; the dent goes into its highest point beside the
+// middle of its width (the roof; a dent on a mirror plane of the shape looks like design to
+// detect_highlight_line_irregularities(), see its reference).
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Highlight_lines/default_light_setup.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/fair_with_highlight_lines.h>
+
+#include <cmath>
+#include <iostream>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+namespace HL = CGAL::Highlight_lines;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+int main(int argc, char** argv)
+{
+  const std::string input =
+      argc > 1 ? argv[1] : std::string(HIGHLIGHT_LINES_DATA_DIR) + "/beetle.off";
+  const std::string output = argc > 2 ? argv[2] : "fair_dented_region.off";
+  Mesh mesh;
+  if (!CGAL::IO::read_polygon_mesh(input, mesh) || is_empty(mesh)) {
+    std::cerr << "cannot read " << input << "\n";
+    return 1;
+  }
+
+  // The region: the faces within 7 % of the bounding box's diagonal of the highest vertex
+  // beside the middle of the width.
+  const CGAL::Bbox_3 box = PMP::bbox(mesh);
+  const double diagonal =
+      std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                CGAL::square(box.zmax() - box.zmin()));
+  const double radius = 0.07 * diagonal;
+  Mesh::Vertex_index top; // none yet
+  const double beside = box.xmin() + 0.55 * (box.xmax() - box.xmin());
+  for (Mesh::Vertex_index v : vertices(mesh))
+    if (mesh.point(v).x() > beside &&
+        (top == Mesh::null_vertex() || mesh.point(v).y() > mesh.point(top).y()))
+      top = v;
+  const K::Point_3 centre = mesh.point(top);
+  auto inside = [&](Mesh::Vertex_index v) {
+    return CGAL::squared_distance(mesh.point(v), centre) < radius * radius;
+  };
+  std::vector<Mesh::Face_index> region;
+  for (Mesh::Face_index f : faces(mesh)) {
+    bool all = true;
+    for (Mesh::Vertex_index v : vertices_around_face(halfedge(f, mesh), mesh))
+      all = all && inside(v);
+    if (all)
+      region.push_back(f);
+  }
+
+  // The defect: a smooth dent of depth 0.6 % of the diagonal, pressed along the normals.
+  std::vector<std::pair<Mesh::Vertex_index, K::Point_3>> dented;
+  for (Mesh::Vertex_index v : vertices(mesh)) {
+    const double t = CGAL::squared_distance(mesh.point(v), centre) / CGAL::square(0.6 * radius);
+    if (t < 1)
+      dented.emplace_back(v, mesh.point(v) - 0.006 * diagonal * CGAL::square(1 - t) * (1 - t) *
+                                                 PMP::compute_vertex_normal(v, mesh));
+  }
+  for (const auto& [v, p] : dented)
+    mesh.point(v) = p;
+  if (argc > 3 &&
+      !CGAL::IO::write_polygon_mesh(argv[3], mesh, CGAL::parameters::stream_precision(17)))
+    return 1;
+
+  // The fairing: the region's inner vertices move so that the surface is fair and its highlight
+  // lines run as the lines around the region predict. A bad input throws and leaves the mesh
+  // as it was; a valid one always gets a result, with a status.
+  const HL::Light_setup<K> lights = HL::default_light_setup(mesh);
+  const HL::Fairing_report report = CGAL::fair_with_highlight_lines(mesh, region, lights);
+  std::cout << region.size() << " faces, " << report.number_of_movable_vertices
+            << " movable vertices: " << HL::to_string(report.status) << " after "
+            << report.iterations << " iterations\n";
+
+  return CGAL::IO::write_polygon_mesh(output, mesh, CGAL::parameters::stream_precision(17)) ? 0 : 1;
+}
