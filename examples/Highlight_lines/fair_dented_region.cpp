@@ -1,10 +1,8 @@
 // fair_with_highlight_lines() on a CGAL::Surface_mesh: a smooth dent is pressed into the mesh,
 // the faces around it are faired, and the faired mesh (and, if asked, the dented one) is written.
-//
 //   fair_dented_region [mesh.off] [faired.off] [dented.off]
-// Without a mesh, the bundled VW Beetle body; the dent goes into its highest point beside the
-// middle of its width (the roof; a dent on a mirror plane of the shape looks like design to
-// detect_highlight_line_irregularities(), see its reference).
+// Without a mesh, the bundled VW Beetle body, dented beside the middle of its roof (on a mirror
+// plane of a shape a dent looks like design to detect_highlight_line_irregularities()).
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Highlight_lines/default_light_setup.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
@@ -13,6 +11,7 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/fair_with_highlight_lines.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <vector>
@@ -33,8 +32,7 @@ int main(int argc, char** argv)
     return 1;
   }
 
-  // The region: the faces within 7 % of the bounding box's diagonal of the highest vertex
-  // beside the middle of the width.
+  // The region: the faces within 7 % of the box's diagonal of the top vertex beside the middle.
   const CGAL::Bbox_3 box = PMP::bbox(mesh);
   const double diagonal =
       std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
@@ -52,10 +50,8 @@ int main(int argc, char** argv)
   };
   std::vector<Mesh::Face_index> region;
   for (Mesh::Face_index f : faces(mesh)) {
-    bool all = true;
-    for (Mesh::Vertex_index v : vertices_around_face(halfedge(f, mesh), mesh))
-      all = all && inside(v);
-    if (all)
+    const auto corners = vertices_around_face(halfedge(f, mesh), mesh);
+    if (std::all_of(corners.begin(), corners.end(), inside))
       region.push_back(f);
   }
 
@@ -69,18 +65,16 @@ int main(int argc, char** argv)
   }
   for (const auto& [v, p] : dented)
     mesh.point(v) = p;
-  if (argc > 3 &&
-      !CGAL::IO::write_polygon_mesh(argv[3], mesh, CGAL::parameters::stream_precision(17)))
+  const auto precision = CGAL::parameters::stream_precision(17);
+  if (argc > 3 && !CGAL::IO::write_polygon_mesh(argv[3], mesh, precision))
     return 1;
 
-  // The fairing: the region's inner vertices move so that the surface is fair and its highlight
-  // lines run as the lines around the region predict. A bad input throws and leaves the mesh
-  // as it was; a valid one always gets a result, with a status.
+  // The fairing: the surface becomes fair and its highlight lines run as those around the region
+  // predict. Bad input throws (the mesh unchanged); a stall returns the best result, with a status.
   const HL::Light_setup<K> lights = HL::default_light_setup(mesh);
   const HL::Fairing_report report = CGAL::fair_with_highlight_lines(mesh, region, lights);
   std::cout << region.size() << " faces, " << report.number_of_movable_vertices
             << " movable vertices: " << HL::to_string(report.status) << " after "
             << report.iterations << " iterations\n";
-
-  return CGAL::IO::write_polygon_mesh(output, mesh, CGAL::parameters::stream_precision(17)) ? 0 : 1;
+  return CGAL::IO::write_polygon_mesh(output, mesh, precision) ? 0 : 1;
 }
