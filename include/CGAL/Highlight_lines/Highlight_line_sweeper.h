@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <mutex>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -53,6 +54,15 @@ struct Sweeper_geom_traits
                           TriangleMesh, VertexPointMap>::type>::value_type>::Kernel>::type type;
 };
 
+// A mutex that a copy of its owner gets anew: it guards a cache of the owner, not its value.
+struct Copyable_mutex
+{
+  std::mutex mutex;
+  Copyable_mutex() = default;
+  Copyable_mutex(const Copyable_mutex&) {}
+  Copyable_mutex& operator=(const Copyable_mutex&) { return *this; }
+};
+
 } // namespace internal
 
 /*!
@@ -76,6 +86,10 @@ products of the normals (their sums stay in the sequential order), the classific
 vertices, the placement of the nodes and their connection per face; tracing the lines and
 building the model stay sequential. The result is bit for bit the one of the sequential
 computation: same nodes, same lines, in the same order.
+
+The `compute()` functions are `const` and may be called on one sweeper from several threads at
+once: a call reuses the memory of the previous one unless another call is running, and then
+works in its own.
 
 \tparam TriangleMesh a model of `FaceGraph` whose faces are triangles
 \tparam VertexPointMap a model of `ReadablePropertyMap` from vertices to points, or
@@ -222,10 +236,13 @@ public:
   void compute(const Lights& lights, Model& model,
                const NamedParameters& np = CGAL::parameters::default_values()) const
   {
-    raw_.keep_levels = false; // the model needs only the keys and d values
-    compute_raw(lights, level_window(np), facing_side_only(np), raw_);
-    const internal::Highlight_nodes& nodes = raw_.nodes;
-    const internal::Traced_lines& traced = raw_.lines;
+    std::unique_lock<std::mutex> lock(raw_mutex_.mutex, std::try_to_lock);
+    Raw_model own; // another thread is computing in raw_
+    Raw_model& raw = lock.owns_lock() ? raw_ : own;
+    raw.keep_levels = false; // the model needs only the keys and d values
+    compute_raw(lights, level_window(np), facing_side_only(np), raw);
+    const internal::Highlight_nodes& nodes = raw.nodes;
+    const internal::Traced_lines& traced = raw.lines;
 
     // Nodes that no segment reaches (edges whose faces all lie across a pole or join only the
     // facing window, extrema lying exactly on a level) carry no line; they are sorted last and
@@ -276,8 +293,8 @@ public:
       model_lines[i].is_closed = traced.lines[i].closed;
       model_lines[i].nodes.assign(traced.lines[i].nodes.begin(), traced.lines[i].nodes.end());
     }
-    model.set_lights_and_counts(lights, raw_.segments.segments.size(), nodes.number_of_capped_edges,
-                                raw_.summary.undefined, raw_.summary.out_of_range,
+    model.set_lights_and_counts(lights, raw.segments.segments.size(), nodes.number_of_capped_edges,
+                                raw.summary.undefined, raw.summary.out_of_range,
                                 nodes.number_of_trimmed_nodes);
   }
 
@@ -309,10 +326,13 @@ public:
   {
     static_assert(std::is_integral<Index>::value && sizeof(Index) >= 4,
                   "Index must be an integer type of at least 32 bits");
-    raw_.keep_levels = false;
-    compute_raw(lights, level_window(np), facing_side_only(np), raw_, false);
-    const std::vector<internal::Raw_node>& nodes = raw_.nodes.nodes;
-    const std::vector<std::array<int, 2>>& raw_segments = raw_.segments.segments;
+    std::unique_lock<std::mutex> lock(raw_mutex_.mutex, std::try_to_lock);
+    Raw_model own; // another thread is computing in raw_
+    Raw_model& raw = lock.owns_lock() ? raw_ : own;
+    raw.keep_levels = false;
+    compute_raw(lights, level_window(np), facing_side_only(np), raw, false);
+    const std::vector<internal::Raw_node>& nodes = raw.nodes.nodes;
+    const std::vector<std::array<int, 2>>& raw_segments = raw.segments.segments;
     points.resize(nodes.size());
     segments.resize(raw_segments.size());
     const internal::Chunks chunks =
@@ -374,7 +394,11 @@ public:
   /// \cond SKIP_IN_MANUAL
   const internal::Local_mesh<TriangleMesh>& local_mesh() const { return mesh_; }
   const internal::Vertex_normals& vertex_normals() const { return normals_; }
-  const internal::Classification_statistics& statistics() const { return statistics_; }
+  internal::Classification_statistics statistics() const
+  {
+    std::lock_guard<std::mutex> guard(statistics_mutex_.mutex);
+    return statistics_;
+  }
 
   // The model in local ids, as the fairing works with it.
   struct Raw_model
@@ -462,9 +486,13 @@ public:
 
   void classify(const Lights& lights, Raw_model& out, bool facing_side_only) const
   {
+    internal::Classification_statistics statistics;
     internal::classify_vertices<ConcurrencyTag>(
         classifier(lights), mesh_.number_of_model_vertices, facing_side_only,
-        out.keep_levels ? &out.levels : nullptr, out.keys, out.distances, out.summary, statistics_);
+        out.keep_levels ? &out.levels : nullptr, out.keys, out.distances, out.summary, statistics);
+    std::lock_guard<std::mutex> guard(statistics_mutex_.mutex);
+    statistics_.static_filter_failures += statistics.static_filter_failures;
+    statistics_.interval_filter_failures += statistics.interval_filter_failures;
   }
 
   internal::Level_classifier<TriangleMesh> classifier(const Lights& lights) const
@@ -483,8 +511,11 @@ private:
   internal::Local_mesh<TriangleMesh> mesh_;
   internal::Vertex_normals normals_;
   std::vector<unsigned char> owned_edges_; // per model face: internal::compute_owned_edges()
-  mutable Raw_model raw_;                  // reused across sweeps: no reallocation, no page faults
+  // Reused across sweeps (no reallocation, no page faults) by one call at a time.
+  mutable Raw_model raw_;
+  mutable internal::Copyable_mutex raw_mutex_;
   mutable internal::Classification_statistics statistics_;
+  mutable internal::Copyable_mutex statistics_mutex_;
 };
 
 } // namespace Highlight_lines

@@ -4,7 +4,8 @@
 // exactly on levels (vertex nodes, highlight edges), capped edges and face ranges, across
 // sweeps of one sweeper, and after update_positions(). Errors name the same element. A model
 // computed into an existing model object (Highlight_line_sweeper::compute(lights, model)) is
-// the fresh one, whatever the object held before.
+// the fresh one, whatever the object held before, and a const sweeper computes from several
+// threads at once.
 // The identity tests need TBB (CGAL_LINKED_WITH_TBB); without it only the fallback of
 // Parallel_if_available_tag is checked.
 #include "test_meshes.h"
@@ -22,6 +23,7 @@
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -295,6 +297,48 @@ TEST(Sweeper, SegmentsAreThoseOfTheModelsLines)
                                HL::parameters::level_range(std::make_pair(5, 4)),
                                "bunny, no light");
   EXPECT_TRUE(segments.empty());
+}
+
+// compute() and compute_segments() are const: several threads may call them on one sweeper at
+// once (each call then works in its own memory or in the sweeper's, never in another's). Four
+// threads sweep the lights over one sweeper together; every model and every segment list is
+// the one a sweeper used by one thread gives.
+TEST(Sweeper, ConstComputationsFromSeveralThreadsAtOnceGiveTheSequentialResults)
+{
+  const Surface_mesh refined = shared_mesh("beetle.off", 1);
+  typedef HL::Highlight_line_sweeper<Surface_mesh> Sweeper;
+  const Sweeper alone(refined), shared(refined);
+  const Lights lights = HL::default_light_setup(refined);
+  const int threads = 4, steps = 6;
+  auto step_lights = [&](int t, int step) {
+    return lights.translated(lights.index_direction() *
+                             (lights.spacing() * 0.07 * (t * steps + step)));
+  };
+  std::vector<std::vector<Sweeper::Model>> models(threads);
+  std::vector<std::vector<std::vector<std::array<unsigned int, 2>>>> segments(threads);
+  std::vector<std::thread> workers;
+  for (int t = 0; t < threads; ++t)
+    workers.emplace_back([&, t] {
+      std::vector<Point> points;
+      for (int step = 0; step < steps; ++step) {
+        models[std::size_t(t)].push_back(shared.compute(step_lights(t, step)));
+        segments[std::size_t(t)].emplace_back();
+        shared.compute_segments(step_lights(t, step), points, segments[std::size_t(t)].back());
+      }
+    });
+  for (std::thread& worker : workers)
+    worker.join();
+  std::vector<Point> points;
+  std::vector<std::array<unsigned int, 2>> expected;
+  for (int t = 0; t < threads; ++t)
+    for (int step = 0; step < steps; ++step) {
+      const std::string what = "thread " + std::to_string(t) + ", step " + std::to_string(step);
+      expect_identical(alone.compute(step_lights(t, step)),
+                       models[std::size_t(t)][std::size_t(step)], what);
+      alone.compute_segments(step_lights(t, step), points, expected);
+      ASSERT_EQ(expected, segments[std::size_t(t)][std::size_t(step)]) << what;
+    }
+  EXPECT_GT(expected.size(), 1000u);
 }
 
 // The same on Polyhedron_3 (handles, not indices), with 32-bit indices into reused arrays.
