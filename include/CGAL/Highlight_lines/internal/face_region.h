@@ -1,0 +1,165 @@
+// Copyright (c) 2026 The Highlight_lines package authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_FACE_REGION_H
+#define CGAL_HIGHLIGHT_LINES_INTERNAL_FACE_REGION_H
+
+#include <CGAL/Highlight_lines/Invalid_input.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+
+template <typename P>
+class Surface_mesh;
+template <typename K, typename VEF>
+class SM_index_pmap;
+class SM_Face_index;
+
+namespace Highlight_lines {
+namespace internal {
+
+// The faces of a region, looked up by face index: the fairing asks whether a face is in the
+// region hundreds of thousands of times, which a std::set answers with a tree walk each.
+template <typename TriangleMesh, typename FaceIndexMap>
+class Face_region
+{
+public:
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  typedef typename std::vector<face_descriptor>::const_iterator const_iterator;
+
+  Face_region(FaceIndexMap fim, std::size_t index_bound) : fim_(fim), marked_(index_bound, 0) {}
+
+  std::size_t index(face_descriptor f) const { return std::size_t(get(fim_, f)); }
+
+  // Requires a face of the mesh.
+  bool insert(face_descriptor f)
+  {
+    char& mark = marked_[index(f)];
+    if (mark)
+      return false;
+    mark = 1;
+    faces_.push_back(f);
+    return true;
+  }
+  // 1 for a face of the mesh in the region, else 0.
+  std::size_t count(face_descriptor f) const
+  {
+    const std::size_t i = index(f);
+    return i < marked_.size() && marked_[i] ? 1 : 0;
+  }
+  const_iterator begin() const { return faces_.begin(); } // in the order of insertion
+  const_iterator end() const { return faces_.end(); }
+  std::size_t size() const { return faces_.size(); }
+  bool empty() const { return faces_.empty(); }
+
+private:
+  FaceIndexMap fim_;
+  std::vector<char> marked_;
+  std::vector<face_descriptor> faces_;
+};
+
+// One more than the largest face index of `tm`.
+template <typename TriangleMesh, typename FaceIndexMap>
+std::size_t face_index_bound(const TriangleMesh& tm, FaceIndexMap fim)
+{
+  std::size_t bound = 0;
+  for (auto f : faces(tm))
+    bound = (std::max)(bound, std::size_t(get(fim, f)) + 1);
+  return bound;
+}
+
+// Whether the faces are a Surface_mesh's indices read with its own index map: then a face
+// belongs to the mesh if its index is below the face array's size and it is not removed.
+template <typename TriangleMesh, typename FaceIndexMap>
+struct Has_surface_mesh_face_indices : std::false_type
+{
+};
+template <typename P>
+struct Has_surface_mesh_face_indices<Surface_mesh<P>, SM_index_pmap<P, SM_Face_index>>
+    : std::true_type
+{
+};
+
+// The region, after checking that it is a non-empty range of faces of `tm`. A face belongs
+// to `tm` if it is the face of `tm` with its index: one linear pass over the faces (a set of
+// all faces would cost O(F log F) and an allocation per face, for every region), except on a
+// Surface_mesh, which answers without one (a car body has 10^6 faces, a region hundreds).
+template <typename TriangleMesh, typename FaceRange, typename FaceIndexMap>
+Face_region<TriangleMesh, FaceIndexMap> checked_region(const TriangleMesh& tm,
+                                                       const FaceRange& faces_in, FaceIndexMap fim)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  const face_descriptor null_face = boost::graph_traits<TriangleMesh>::null_face();
+  constexpr bool surface_mesh = Has_surface_mesh_face_indices<TriangleMesh, FaceIndexMap>::value;
+  std::size_t index_bound = 0;
+  std::vector<face_descriptor> face_with_index;
+  if constexpr (surface_mesh) {
+    index_bound = tm.num_faces(); // removed faces included
+  } else {
+    index_bound = face_index_bound(tm, fim);
+    face_with_index.assign(index_bound, null_face);
+    for (face_descriptor f : faces(tm))
+      face_with_index[std::size_t(get(fim, f))] = f;
+  }
+  auto is_face_with_index = [&](face_descriptor f, std::size_t index) {
+    if constexpr (surface_mesh)
+      return !tm.is_removed(f);
+    else
+      return face_with_index[index] == f;
+  };
+  Face_region<TriangleMesh, FaceIndexMap> region(fim, index_bound);
+  for (face_descriptor f : faces_in) {
+    // A foreign face's index is read from the foreign face; it is only compared below.
+    const std::size_t index = f == null_face ? index_bound : std::size_t(get(fim, f));
+    if (index >= index_bound || !is_face_with_index(f, index))
+      throw Invalid_input(Invalid_input::Problem::FACE_NOT_IN_MESH,
+                          "fair_with_highlight_lines(): the region contains a face that is not "
+                          "a face of the mesh",
+                          f == null_face ? Invalid_input::no_element : index);
+    region.insert(f);
+  }
+  if (region.empty())
+    throw Invalid_input(Invalid_input::Problem::EMPTY_FACE_RANGE,
+                        "fair_with_highlight_lines(): the region is empty");
+  return region;
+}
+
+// The region and `rings` rings of faces around it, by increasing face index: where highlight
+// lines are recomputed.
+template <typename TriangleMesh, typename FaceIndexMap>
+std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>
+neighborhood(const TriangleMesh& tm, const Face_region<TriangleMesh, FaceIndexMap>& region,
+             int rings)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  Face_region<TriangleMesh, FaceIndexMap> result = region;
+  std::vector<face_descriptor> front(result.begin(), result.end());
+  for (int ring = 0; ring < rings; ++ring) {
+    std::vector<face_descriptor> next;
+    for (face_descriptor f : front)
+      for (auto v : vertices_around_face(halfedge(f, tm), tm))
+        for (face_descriptor g : faces_around_target(halfedge(v, tm), tm))
+          if (g != boost::graph_traits<TriangleMesh>::null_face() && result.insert(g))
+            next.push_back(g);
+    front.swap(next);
+  }
+  std::vector<face_descriptor> faces_by_index(result.begin(), result.end());
+  std::sort(faces_by_index.begin(), faces_by_index.end(),
+            [&result](face_descriptor a, face_descriptor b) {
+              return result.index(a) < result.index(b);
+            });
+  return faces_by_index;
+}
+
+} // namespace internal
+} // namespace Highlight_lines
+} // namespace CGAL
+
+#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_FACE_REGION_H
