@@ -35,15 +35,10 @@ namespace HLI = CGAL::Highlight_lines::internal;
 namespace HLP = CGAL::Highlight_lines::parameters;
 using HLI::vector3::Vec3;
 
-double hood(double x, double y)
-{
-  return 0.25 * (1 - 0.35 * x * x) - 0.12 * y * y + 0.05 * x * y;
-}
-
 // An irregularly triangulated car hood (jittered grid of 80 x 80 cells over [-1, 1]^2).
 HB::Mesh smooth_hood(unsigned seed, int n = 80)
 {
-  return test::to_mesh<HB::Mesh>(test::grid(n, 2.0 / n, -1, -1, hood, 0.3, seed));
+  return test::to_mesh<HB::Mesh>(test::grid(n, 2.0 / n, -1, -1, test::hood, 0.3, seed));
 }
 
 // The bending measure (`local_residual(false)`, closer to the paper), from all sides.
@@ -418,7 +413,7 @@ TEST(BendingMeasure, RegionsEncloseTheirDefectWithAMargin)
 // regular grid whose column x = 0.1 runs along the crease.
 double folded(double x, double y)
 {
-  return hood(x, y) + (x > 0.1 ? 6 * (x - 0.1) : 0.0);
+  return test::hood(x, y) + (x > 0.1 ? 6 * (x - 0.1) : 0.0);
 }
 
 TEST(Detection, RegionsNeverCrossASharpEdge)
@@ -820,7 +815,7 @@ TEST(Detection, CommutesWithRigidMotionAndScaling)
 
 TEST(Detection, IndependentOfFaceOrderAndMeshType)
 {
-  test::Soup soup = test::grid(60, 2.0 / 60, -1, -1, hood, 0.3, 9);
+  test::Soup soup = test::grid(60, 2.0 / 60, -1, -1, test::hood, 0.3, 9);
   HB::Mesh mesh = test::to_mesh<HB::Mesh>(soup);
   ASSERT_EQ(HB::inject_defects(
                 mesh, 2, 5.0, 0.1, 9, [](auto) { return true; }, 6)
@@ -918,7 +913,7 @@ struct Dented_hood_pair
 
   Dented_hood_pair()
   {
-    test::Soup soup = test::grid(40, 2.0 / 40, -1, -1, hood, 0.3, 7);
+    test::Soup soup = test::grid(40, 2.0 / 40, -1, -1, test::hood, 0.3, 7);
     mesh = test::to_mesh<HB::Mesh>(soup);
     defects = HB::inject_defects(mesh, 1, 4.0, 0.5, 7, [](auto) { return true; }).size();
     for (auto v : vertices(mesh))
@@ -1282,7 +1277,7 @@ TEST(DetectAndFair, TheFairingMarginStopsAtSharpEdges)
 // anything moves, on either mesh type.
 TEST(DetectAndFair, FairsWithTheCallersMargin)
 {
-  test::Soup soup = test::grid(50, 2.0 / 50, -1, -1, hood, 0.3, 6);
+  test::Soup soup = test::grid(50, 2.0 / 50, -1, -1, test::hood, 0.3, 6);
   HB::Mesh mesh = test::to_mesh<HB::Mesh>(soup);
   ASSERT_EQ(HB::inject_defects(mesh, 1, 4.0, 0.5, 6, [](auto) { return true; }).size(), 1u);
   const HB::Mesh dented = mesh;
@@ -1364,7 +1359,7 @@ TEST(DetectAndFair, FairsADentNextToACreaseWithoutContinuingTheCrease)
 
 TEST(DetectAndFair, SurfaceMeshAndPolyhedronAgree)
 {
-  test::Soup soup = test::grid(50, 2.0 / 50, -1, -1, hood, 0.3, 6);
+  test::Soup soup = test::grid(50, 2.0 / 50, -1, -1, test::hood, 0.3, 6);
   HB::Mesh mesh = test::to_mesh<HB::Mesh>(soup);
   ASSERT_EQ(HB::inject_defects(mesh, 1, 4.0, 0.5, 6, [](auto) { return true; }).size(), 1u);
   for (auto v : vertices(mesh))

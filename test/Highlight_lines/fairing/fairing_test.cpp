@@ -23,12 +23,6 @@ namespace HL = CGAL::Highlight_lines;
 namespace HLP = CGAL::Highlight_lines::parameters;
 typedef boost::graph_traits<Surface_mesh>::face_descriptor face_descriptor;
 
-// A car-hood-like height field over [-1, 1]^2, gently curved.
-double hood(double x, double y)
-{
-  return 0.25 * (1 - 0.35 * x * x) - 0.12 * y * y + 0.05 * x * y;
-}
-
 // A smooth dent of depth `depth` and radius `radius` around (cx, cy): (1 - (r/R)^2)^3.
 double dent(double x, double y, double depth, double radius, double cx = 0.1, double cy = -0.05)
 {

@@ -25,11 +25,6 @@ namespace HLP = CGAL::Highlight_lines::parameters;
 typedef Surface_mesh::Face_index Face;
 typedef Surface_mesh::Vertex_index Vertex;
 
-double hood(double x, double y)
-{
-  return 0.25 * (1 - 0.35 * x * x) - 0.12 * y * y + 0.05 * x * y;
-}
-
 // A hood (n x n grid over [-1, 1]^2, jittered) with a smooth dent of `depth` around the origin.
 Soup dented_hood_soup(int n, double depth, double jitter = 0.25)
 {

@@ -72,6 +72,13 @@ inline Soup grid(int n, double step, double x0, double y0,
   return soup;
 }
 
+// The car hood of the fairing and detection tests (and of benchmark_fairing): a gently curved
+// height field over [-1, 1]^2, for grid().
+inline double hood(double x, double y)
+{
+  return 0.25 * (1 - 0.35 * x * x) - 0.12 * y * y + 0.05 * x * y;
+}
+
 // Cylinder x^2 + z^2 = r^2 around the y axis, angles in [-half_angle, half_angle] from +z,
 // y in [0, length]; `around` x `along` cells, optionally with jittered interior vertices.
 inline Soup cylinder_patch(double r, double half_angle, double length, int around, int along,
