@@ -32,11 +32,9 @@
 // the largest deviation from the known solution relative to the largest bound, and the
 // percentage of active bounds that differ between the problem and the warm start's problem.
 
-#include <CGAL/Highlight_lines/Active_set_box_QP_solver.h>
+#include "fairing_like_programs.h"
 
-#include <CGAL/Delaunay_triangulation_2.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <CGAL/Highlight_lines/Active_set_box_QP_solver.h>
 
 #include <Eigen/SparseCholesky>
 #include <benchmark/benchmark.h>
@@ -53,11 +51,6 @@
 
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Vertex_base = CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>;
-using Delaunay =
-    CGAL::Delaunay_triangulation_2<Kernel, CGAL::Triangulation_data_structure_2<Vertex_base>>;
-using Point = Kernel::Point_2;
 using Sparse_matrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 using Solver = CGAL::Highlight_lines::Active_set_box_QP_solver;
 
@@ -75,103 +68,7 @@ double thread_seconds()
   return double(now.tv_sec) + 1e-9 * double(now.tv_nsec);
 }
 
-// The matrix and bounds of a fairing QP on a disk patch with n interior vertices.
-struct Fairing_like_patch
-{
-  Sparse_matrix Q;
-  Eigen::VectorXd bound; // |x_i| <= bound_i
-  std::vector<Point> position;
-
-  explicit Fairing_like_patch(int n)
-  {
-    std::mt19937 random(20260101u + static_cast<unsigned>(n));
-    std::uniform_real_distribution<double> uniform(0., 1.);
-    std::vector<std::pair<Point, int>> points;
-    const int ring = static_cast<int>(2. * std::sqrt(M_PI * n)) + 8;
-    for (int k = 0; k < ring; ++k) {
-      const double angle = 2. * M_PI * k / ring;
-      points.emplace_back(Point(std::cos(angle), std::sin(angle)), n + k);
-    }
-    for (int k = 0; k < n;) {
-      const double x = 2. * uniform(random) - 1., y = 2. * uniform(random) - 1.;
-      // inside the disk, away from the ring, with a density 3x higher on one side
-      if (x * x + y * y > 0.97 || uniform(random) > 0.35 + 0.325 * (1. + x))
-        continue;
-      points.emplace_back(Point(x, y), k++);
-    }
-    const Delaunay dt(points.begin(), points.end());
-    const int all = n + ring;
-    position.resize(all);
-    for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
-      position[v->info()] = v->point();
-
-    // Cotangent Laplacian, barycentric areas, shortest edges, one-rings.
-    std::vector<Eigen::Triplet<double>> laplacian;
-    std::vector<double> area(all, 0.), shortest(all, 1e300);
-    std::vector<std::vector<int>> ring_of(all);
-    for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
-      const int id[3] = {f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
-      const double face_area =
-          std::abs(CGAL::area(position[id[0]], position[id[1]], position[id[2]]));
-      for (int e = 0; e < 3; ++e) {
-        const int a = id[e], b = id[(e + 1) % 3], opposite = id[(e + 2) % 3];
-        const auto u = position[a] - position[opposite], v = position[b] - position[opposite];
-        const double cotangent = (u * v) / std::abs(u.x() * v.y() - u.y() * v.x());
-        laplacian.emplace_back(a, b, -0.5 * cotangent);
-        laplacian.emplace_back(b, a, -0.5 * cotangent);
-        laplacian.emplace_back(a, a, 0.5 * cotangent);
-        laplacian.emplace_back(b, b, 0.5 * cotangent);
-        area[a] += face_area / 3.;
-        const double length = std::sqrt(CGAL::squared_distance(position[a], position[b]));
-        shortest[a] = std::min(shortest[a], length);
-        shortest[b] = std::min(shortest[b], length);
-        ring_of[a].push_back(b);
-        ring_of[b].push_back(a);
-      }
-    }
-    Sparse_matrix L(all, all);
-    L.setFromTriplets(laplacian.begin(), laplacian.end());
-    const Sparse_matrix W = L.topLeftCorner(n, n); // boundary ring fixed
-    Eigen::VectorXd inverse_area(n);
-    for (int i = 0; i < n; ++i)
-      inverse_area[i] = 1. / area[i];
-    const Sparse_matrix bilaplacian = Sparse_matrix(W.transpose()) * inverse_area.asDiagonal() * W;
-
-    // Highlight nodes: edges crossing the level lines of a linear "distance" function.
-    std::vector<Eigen::Triplet<double>> nodes;
-    for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
-      const int a = e->first->vertex((e->second + 1) % 3)->info();
-      const int b = e->first->vertex((e->second + 2) % 3)->info();
-      const auto level = [&](int v) {
-        return std::floor(7. * position[v].x() + 3. * position[v].y());
-      };
-      if (level(a) == level(b))
-        continue;
-      std::vector<int> support{a, b};
-      support.insert(support.end(), ring_of[a].begin(), ring_of[a].end());
-      support.insert(support.end(), ring_of[b].begin(), ring_of[b].end());
-      std::sort(support.begin(), support.end());
-      support.erase(std::unique(support.begin(), support.end()), support.end());
-      std::vector<std::pair<int, double>> j;
-      for (int v : support)
-        if (v < n)
-          j.emplace_back(v, (v == a || v == b ? 1. : 0.3) * (uniform(random) - 0.3));
-      for (const auto& p : j)
-        for (const auto& q : j)
-          nodes.emplace_back(p.first, q.first, p.second * q.second);
-    }
-    Sparse_matrix low_rank(n, n);
-    low_rank.setFromTriplets(nodes.begin(), nodes.end());
-    // The node term weighs about a third of the fairness term on the diagonal.
-    const double weight =
-        0.3 * bilaplacian.diagonal().mean() / std::max(low_rank.diagonal().mean(), 1e-300);
-    Q = bilaplacian + weight * low_rank;
-    Q.makeCompressed();
-    bound.resize(n);
-    for (int i = 0; i < n; ++i)
-      bound[i] = 0.5 * shortest[i];
-  }
-};
+using Highlight_lines_benchmark::Fairing_like_patch; // the fairing-like programs
 
 // A linear term whose minimiser is known: the smooth field a * s clamped to the bounds,
 // with a chosen so that the requested fraction of bounds is active, and multipliers on the
