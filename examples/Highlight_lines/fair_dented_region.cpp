@@ -1,8 +1,6 @@
-// fair_with_highlight_lines() on a CGAL::Surface_mesh: a smooth dent is pressed into the mesh,
-// the faces around it are faired, and the faired mesh (and, if asked, the dented one) is written.
+// fair_with_highlight_lines() on a CGAL::Surface_mesh: a smooth dent is pressed into the mesh
+// (default: the bundled Beetle), the faces around it are faired, and the results are written.
 //   fair_dented_region [mesh.off] [faired.off] [dented.off]
-// Without a mesh, the bundled VW Beetle body, dented beside the middle of its roof (on a mirror
-// plane of a shape a dent looks like design to detect_highlight_line_irregularities()).
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Highlight_lines/default_light_setup.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
@@ -35,13 +33,12 @@ int main(int argc, char** argv)
   // The region: the faces within 7 % of the box's diagonal of the top vertex beside the middle.
   const CGAL::Bbox_3 box = PMP::bbox(mesh);
   const double diagonal =
-      std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
-                CGAL::square(box.zmax() - box.zmin()));
+      std::sqrt(CGAL::squared_distance(K::Point_3(box.xmin(), box.ymin(), box.zmin()),
+                                       K::Point_3(box.xmax(), box.ymax(), box.zmax())));
   const double radius = 0.07 * diagonal;
-  Mesh::Vertex_index top; // none yet
-  const double beside = box.xmin() + 0.55 * (box.xmax() - box.xmin());
+  Mesh::Vertex_index top;
   for (Mesh::Vertex_index v : vertices(mesh))
-    if (mesh.point(v).x() > beside &&
+    if (mesh.point(v).x() > box.xmin() + 0.55 * (box.xmax() - box.xmin()) &&
         (top == Mesh::null_vertex() || mesh.point(v).y() > mesh.point(top).y()))
       top = v;
   const K::Point_3 centre = mesh.point(top);
@@ -69,12 +66,15 @@ int main(int argc, char** argv)
   if (argc > 3 && !CGAL::IO::write_polygon_mesh(argv[3], mesh, precision))
     return 1;
 
-  // The fairing: the surface becomes fair and its highlight lines run as those around the region
-  // predict. Bad input throws (the mesh unchanged); a stall returns the best result, with a status.
-  const HL::Light_setup<K> lights = HL::default_light_setup(mesh);
-  const HL::Fairing_report report = CGAL::fair_with_highlight_lines(mesh, region, lights);
-  std::cout << region.size() << " faces, " << report.number_of_movable_vertices
-            << " movable vertices: " << HL::to_string(report.status) << " after "
-            << report.iterations << " iterations\n";
+  // Bad input throws (the mesh unchanged); a stall returns the best result, with a status.
+  try {
+    const HL::Fairing_report report =
+        CGAL::fair_with_highlight_lines(mesh, region, HL::default_light_setup(mesh));
+    std::cout << report.number_of_movable_vertices << " movable vertices, " << report.iterations
+              << " iterations: " << HL::to_string(report.status) << "\n";
+  } catch (const HL::Invalid_input& error) { // e.g. no face within the radius on a coarse mesh
+    std::cerr << error.what() << "\n";
+    return 1;
+  }
   return CGAL::IO::write_polygon_mesh(output, mesh, precision) ? 0 : 1;
 }
