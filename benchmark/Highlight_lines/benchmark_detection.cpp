@@ -43,7 +43,7 @@
 #include <CGAL/Highlight_lines/grown_face_region.h>
 #include <CGAL/Highlight_lines/join_touching_irregularities.h>
 
-#include "../../test/Highlight_lines/model/test_meshes.h"
+#include "test_meshes.h"
 
 #include <benchmark/benchmark.h>
 
@@ -139,11 +139,6 @@ namespace {
 
 const std::vector<double> heights{1.0, 0.5, 0.2, 0.1, 0.05, 0.02, 0.01};
 
-double hood(double x, double y)
-{
-  return 0.25 * (1 - 0.35 * x * x) - 0.12 * y * y + 0.05 * x * y;
-}
-
 // --bending: the detection with HLP::local_residual(false), the bending measure (the default
 // is the local residual, issue 16).
 bool local_residual = true;
@@ -189,7 +184,8 @@ void hood_curve()
   std::vector<Curve_point> curve(heights.size() + 1);
   for (unsigned seed = 1; seed <= 8; ++seed)
     for (std::size_t i = 0; i <= heights.size(); ++i) {
-      HB::Mesh mesh = test::to_mesh<HB::Mesh>(test::grid(80, 2.0 / 80, -1, -1, hood, 0.3, seed));
+      HB::Mesh mesh =
+          test::to_mesh<HB::Mesh>(test::grid(80, 2.0 / 80, -1, -1, test::hood, 0.3, seed));
       std::vector<HB::Injected_defect> defects;
       if (i < heights.size())
         defects = HB::inject_defects(mesh, 4, 5.0, heights[i], seed, [](auto) { return true; });
@@ -234,8 +230,7 @@ struct Table_row
 // Reads the shared mesh `name`; says so and returns false if it is missing.
 bool read_shared_mesh(const std::string& name, HB::Mesh& mesh)
 {
-  std::ifstream in(test::shared_data(name));
-  if (in && CGAL::IO::read_OFF(in, mesh))
+  if (test::read_shared_mesh(name, mesh))
     return true;
   std::cout << "\n" << name << ": not found, skipped\n";
   return false;
@@ -567,7 +562,7 @@ void repair_table(const std::string& name, unsigned seeds)
   HB::Mesh original;
   if (!read_shared_mesh(name, original))
     return;
-  const double e = HB::mean_edge_length(original);
+  const double e = test::mean_edge_length(original);
   auto repair = [](HB::Mesh& mesh, std::size_t& faired) {
     const auto repairs = CGAL::detect_and_fair_highlight_line_irregularities(
         mesh, HL::default_light_setup(mesh, HLP::number_of_lines(30)),
@@ -666,7 +661,7 @@ void repair_limits_table(const std::string& name, unsigned seeds)
   HB::Mesh original;
   if (!read_shared_mesh(name, original))
     return;
-  const double e = HB::mean_edge_length(original);
+  const double e = test::mean_edge_length(original);
   std::cout << "  h/ē  defects  predictable | automatic mode: moved predictable | defect's "
                "disc: ours        PMP::fair   | predictable only: ours   PMP::fair\n";
   Closer_tally all_ours, all_pmp, all_predictable_ours, all_predictable_pmp;

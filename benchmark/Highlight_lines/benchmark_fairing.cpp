@@ -34,6 +34,7 @@
 // `dist_depth` (RMS distance of the movable vertices to the undented surface, in dent depths)
 // and `x_pmp` (time / the time of PMP::fair on the same case in the same run).
 #include "fairing_quality.h"
+#include "test_meshes.h"
 #include "surface_diffusion_flow.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -87,13 +88,8 @@ struct Case
   double dent_depth = 0;
 };
 
-// The hood of the fairing test: a gently curved height field over [-1, 1]², a smooth dent
-// -depth (1 - (r/R)²)³ of radius 0.3 around (0.1, -0.05), and the faces within 0.45 of it.
-double hood(double x, double y)
-{
-  return 0.25 * (1 - 0.35 * x * x) - 0.12 * y * y + 0.05 * x * y;
-}
-
+// The hood of the fairing test (test::hood, a gently curved height field over [-1, 1]²), a smooth
+// dent -depth (1 - (r/R)²)³ of radius 0.3 around (0.1, -0.05), and the faces within 0.45 of it.
 std::unique_ptr<Case> hood_case(const std::string& name, int n, double jitter)
 {
   const double depth = 0.02, radius = 0.3, cx = 0.1, cy = -0.05, region_radius = 0.45;
@@ -110,8 +106,8 @@ std::unique_ptr<Case> hood_case(const std::string& name, int n, double jitter)
       }
       const double r2 = ((x - cx) * (x - cx) + (y - cy) * (y - cy)) / (radius * radius);
       const double dent = r2 < 1 ? -depth * (1 - r2) * (1 - r2) * (1 - r2) : 0.0;
-      undented.emplace_back(x, y, hood(x, y));
-      dented.emplace_back(x, y, hood(x, y) + dent);
+      undented.emplace_back(x, y, test::hood(x, y));
+      dented.emplace_back(x, y, test::hood(x, y) + dent);
     }
   std::vector<std::array<std::size_t, 3>> triangles;
   auto id = [n](int i, int j) { return std::size_t(j * (n + 1) + i); };

@@ -538,15 +538,16 @@ void run_anywhere(std::ostream& out, const Options& options)
       << "| mesh | regions | ours | pmp_fair | ours_willmore | ours moves more than pmp_fair | "
          "tail: ours > 2 ē and > 2 x pmp_fair | ours' largest move / ē |\n"
       << "|---|---|---|---|---|---|---|---|\n";
-  for (const char* stem : HB::shared_mesh_stems()) {
+  for (const std::string stem : HB::shared_mesh_stems()) {
     if (!options.only_mesh.empty() && options.only_mesh != stem)
       continue;
     Mesh mesh;
-    if (!HB::read_shared_mesh(stem, mesh)) {
-      out << "| " << stem << " | cannot read " << HB::shared_mesh_path(stem) << " | | | | | | |\n";
+    if (!test::read_shared_mesh(stem + ".off", mesh)) {
+      out << "| " << stem << " | cannot read " << test::shared_data(stem + ".off")
+          << " | | | | | | |\n";
       continue;
     }
-    const double e = HB::real_dent_detail::global_mean_edge_length(mesh);
+    const double e = test::mean_edge_length(mesh);
     const auto lights = HL::default_light_setup(mesh, HLP::number_of_lines(30));
     std::vector<double> ours_rms, pmp_rms, willmore_rms;
     std::size_t more = 0, tail = 0;
@@ -622,12 +623,13 @@ int main(int argc, char** argv)
   std::size_t cases_total = 0, cases_with_slivers = 0, cases_with_folds = 0, most_slivers = 0,
               most_folded = 0;
   std::string most_slivers_case, most_folded_case;
-  for (const char* stem : HB::shared_mesh_stems()) {
+  for (const std::string stem : HB::shared_mesh_stems()) {
     if (!options.only_mesh.empty() && options.only_mesh != stem)
       continue;
     Mesh mesh;
-    if (!HB::read_shared_mesh(stem, mesh)) {
-      out << "\n## " << stem << ": cannot read " << HB::shared_mesh_path(stem) << ", skipped\n";
+    if (!test::read_shared_mesh(stem + ".off", mesh)) {
+      out << "\n## " << stem << ": cannot read " << test::shared_data(stem + ".off")
+          << ", skipped\n";
       continue;
     }
     const auto making = std::chrono::steady_clock::now();
@@ -648,8 +650,8 @@ int main(int argc, char** argv)
         << (cases.size() - smooth_cases) / dent_options.depths.size() << " rough), " << cases.size()
         << " cases (made in " << fixed(1000 * making_seconds, 0) << " ms)"
         << (options.jitter > 0
-                ? "; jittered tangentially by up to " + general(options.jitter) + " ē_g = " +
-                      general(options.jitter * HB::real_dent_detail::global_mean_edge_length(mesh))
+                ? "; jittered tangentially by up to " + general(options.jitter) +
+                      " ē_g = " + general(options.jitter * test::mean_edge_length(mesh))
                 : std::string())
         << "\n";
     for (const HB::Real_dent_case& c : cases) {

@@ -18,6 +18,8 @@
 // Memory: VmHWM of /proc/self/status, the peak resident set size. Before each phase the peak
 // is reset (writing 5 to /proc/self/clear_refs), so each figure is the peak during that phase,
 // including what was resident before it (given as "rss before").
+#include "test_meshes.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Highlight_lines/Highlight_line_sweeper.h>
 #include <CGAL/Highlight_lines/default_light_setup.h>
@@ -172,12 +174,6 @@ void model_at_scale(int subdivisions)
   sweeps(CGAL::Parallel_if_available_tag());
 }
 
-// The hood of benchmark_fairing.cpp.
-double hood(double x, double y)
-{
-  return 0.25 * (1 - 0.35 * x * x) - 0.12 * y * y + 0.05 * x * y;
-}
-
 void fairing_at_scale(int n, int iterations)
 {
   std::printf("== Part 2: fair_with_highlight_lines, dented hood on a %d x %d grid\n", n, n);
@@ -198,7 +194,7 @@ void fairing_at_scale(int n, int iterations)
         }
         const double r2 = ((x - cx) * (x - cx) + (y - cy) * (y - cy)) / (radius * radius);
         const double dent = r2 < 1 ? -depth * (1 - r2) * (1 - r2) * (1 - r2) : 0.0;
-        points.emplace_back(x, y, hood(x, y) + dent);
+        points.emplace_back(x, y, test::hood(x, y) + dent);
       }
     std::vector<std::array<std::size_t, 3>> triangles;
     auto id = [n](int i, int j) { return std::size_t(j * (n + 1) + i); };

@@ -21,7 +21,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/OFF.h>
 
-#include "../Highlight_lines/flipped_faces.h"
+#include "flipped_faces.h"
 
 #include <CGAL/Highlight_lines/Fairing_report.h>
 #include <CGAL/Highlight_lines/Invalid_input.h>

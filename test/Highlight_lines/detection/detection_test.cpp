@@ -1,9 +1,9 @@
 // detect_highlight_line_irregularities() and detect_and_fair_highlight_line_irregularities():
 // the bending measure, the grouping into regions, recall and precision on seeded injected
 // defects, invariances, bad input, and the repair of what was found.
-#include "../model/test_meshes.h"
+#include "test_meshes.h"
 
-#include "../../../benchmark/Highlight_lines/detection_evaluation.h"
+#include "detection_evaluation.h"
 
 #include <CGAL/Aff_transformation_3.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
@@ -99,7 +99,7 @@ std::vector<std::array<int, 3>> faces_of(const HB::Mesh& mesh)
 struct Mirror_symmetry_of_mesh
 {
   explicit Mirror_symmetry_of_mesh(const HB::Mesh& mesh)
-      : symmetry(points_of(mesh), faces_of(mesh), HB::mean_edge_length(mesh))
+      : symmetry(points_of(mesh), faces_of(mesh), test::mean_edge_length(mesh))
   {
   }
   HLI::Mirror_symmetry symmetry;
@@ -420,7 +420,7 @@ TEST(Detection, RegionsNeverCrossASharpEdge)
 {
   for (unsigned seed = 1; seed <= 3; ++seed) {
     HB::Mesh mesh = test::to_mesh<HB::Mesh>(test::grid(80, 2.0 / 80, -1, -1, folded, 0.0, seed));
-    const double e = HB::mean_edge_length(mesh);
+    const double e = test::mean_edge_length(mesh);
     // Defects centred 1 to 3 edges from the crease: their support lies on both sides.
     const auto defects = HB::inject_defects(
         mesh, 2, 5.0, 0.3, seed,
@@ -542,8 +542,7 @@ TEST(BendingMeasure, FindsMostSmallDefectsAnywhereOnSharedCadMeshes)
 {
   for (const char* name : {"fandisk.off", "rocker-arm.off"}) {
     HB::Mesh original;
-    std::ifstream in(test::shared_data(name));
-    if (!in || !CGAL::IO::read_OFF(in, original))
+    if (!test::read_shared_mesh(name, original))
       GTEST_SKIP() << "shared mesh " << name << " not found";
     HB::Detection_score total;
     for (unsigned seed = 1; seed <= 2; ++seed) {
@@ -587,11 +586,10 @@ TEST(LocalResidual, LocatesSmallDefectsOnHoodsAndNothingElse)
 TEST(LocalResidual, RegionsAreSizedToTheDefect)
 {
   HB::Mesh mesh;
-  std::ifstream in(test::shared_data("rocker-arm.off"));
-  if (!in || !CGAL::IO::read_OFF(in, mesh))
+  if (!test::read_shared_mesh("rocker-arm.off", mesh))
     GTEST_SKIP() << "shared mesh rocker-arm.off not found";
   const auto defects = HB::inject_defects(mesh, 4, 5.0, 0.2, 1, [](auto) { return true; });
-  const double e = HB::mean_edge_length(mesh);
+  const double e = test::mean_edge_length(mesh);
   for (int scales : {1, 2}) {
     const auto found = detect_local_residual(mesh, true, scales);
     ASSERT_FALSE(found.empty());
@@ -627,7 +625,7 @@ TEST(LocalResidual, FindsTheMirrorSymmetryOfDesignAndTheAsymmetryOfADefect)
   HB::Mesh beetle;
   std::ifstream in(std::string(HIGHLIGHT_LINES_DATA_DIR) + "/beetle.off");
   ASSERT_TRUE(in && CGAL::IO::read_OFF(in, beetle));
-  const double e = HB::mean_edge_length(beetle);
+  const double e = test::mean_edge_length(beetle);
   const Mirror_symmetry_of_mesh original(beetle), with_dent(dented);
   ASSERT_TRUE(original.symmetry.is_symmetric());
   EXPECT_DOUBLE_EQ(original.symmetry.tolerance(), 0.02 * e);
@@ -659,12 +657,6 @@ TEST(LocalResidual, TheDemoRoofDentComesFirstAndTheDesignIsLeftAlone)
   EXPECT_GE(found[0].confidence, 0.9);
   for (std::size_t i = 1; i < found.size(); ++i)
     EXPECT_LT(found[i].confidence, 0.01) << HB::describe(found[i]);
-}
-
-bool read_shared_mesh(const std::string& name, HB::Mesh& mesh)
-{
-  std::ifstream in(test::shared_data(name));
-  return in && CGAL::IO::read_OFF(in, mesh);
 }
 
 // Dents and bumps 0.2 ē high and 5 ē wide injected into `original` (seeds 1-2, up to 4 each),
@@ -707,7 +699,7 @@ Ranking rank_injected_defects(const HB::Mesh& original)
 TEST(LocalResidual, RanksDefectsAboveTheDesignOfASymmetricShape)
 {
   HB::Mesh original;
-  if (!read_shared_mesh("beetle.off", original))
+  if (!test::read_shared_mesh("beetle.off", original))
     GTEST_SKIP() << "shared mesh beetle.off not found";
   const Ranking r = rank_injected_defects(original);
   EXPECT_EQ(r.defects, 8u);
@@ -723,7 +715,7 @@ TEST(LocalResidual, RanksDefectsAboveTheDesignOfASymmetricShape)
 TEST(LocalResidual, RanksDefectsByTheirContrastWithTheSurroundings)
 {
   HB::Mesh original;
-  if (!read_shared_mesh("bunny.off", original))
+  if (!test::read_shared_mesh("bunny.off", original))
     GTEST_SKIP() << "shared mesh bunny.off not found";
   const Ranking r = rank_injected_defects(original);
   EXPECT_EQ(r.defects, 6u);
@@ -737,7 +729,7 @@ TEST(LocalResidual, RanksDefectsByTheirContrastWithTheSurroundings)
 TEST(LocalResidual, CountsTheEvidenceAmongTheSetupsThatScoreTheSurface)
 {
   HB::Mesh original;
-  if (!read_shared_mesh("spot.off", original))
+  if (!test::read_shared_mesh("spot.off", original))
     GTEST_SKIP() << "shared mesh spot.off not found";
   std::size_t located = 0, defects = 0;
   for (unsigned seed = 1; seed <= 2; ++seed) {
@@ -998,8 +990,7 @@ TEST(Detection, SweepOptionsActAlikeOnPolyhedronAndSurfaceMesh)
   // skipped on both, and the Polyhedron_3 is left as it was.
   {
     HB::Mesh fandisk;
-    std::ifstream in(test::shared_data("fandisk.off"));
-    if (in && CGAL::IO::read_OFF(in, fandisk)) {
+    if (test::read_shared_mesh("fandisk.off", fandisk)) {
       test::Polyhedron fandisk_ph, before;
       CGAL::copy_face_graph(fandisk, fandisk_ph);
       before = fandisk_ph;

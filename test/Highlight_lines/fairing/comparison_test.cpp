@@ -1,9 +1,9 @@
 // The benchmark's comparison method (Xu et al.'s surface diffusion flow) and quality measures:
 // the flow holds what it must hold, removes a dent, and reaches a steady state.
-#include "../model/test_meshes.h"
+#include "test_meshes.h"
 
-#include "../../../benchmark/Highlight_lines/fairing_quality.h"
-#include "../../../benchmark/Highlight_lines/surface_diffusion_flow.h"
+#include "fairing_quality.h"
+#include "surface_diffusion_flow.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // internal/mean_curvature_fit.h): exact for quadratic height functions on jittered
 // triangulations, an exact quadratic in the normal displacements, an energy that does not
 // grow when an irregular triangulation is refined, and no continuation of a crease into R.
-#include "../model/test_meshes.h"
+#include "test_meshes.h"
 
 #include <CGAL/Highlight_lines/internal/curvature_variation_energy.h>
 

@@ -1,6 +1,6 @@
 // fair_with_highlight_lines(): invariants, ground truth, Jacobian, bad input.
-#include "../forwarding_solver.h"
-#include "../model/test_meshes.h"
+#include "forwarding_solver.h"
+#include "test_meshes.h"
 
 #include <CGAL/Aff_transformation_3.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>

@@ -1,7 +1,7 @@
 // Inputs found by the fuzzer (test/fuzz), each reduced to the call that went wrong. The checks
 // are the fuzzer's: an expected error leaves the mesh bit-identical; a result has only finite
 // points, moves movable vertices only and flips no triangle with respect to the input.
-#include "../model/test_meshes.h"
+#include "test_meshes.h"
 
 #include <CGAL/Highlight_lines/fairing_building_blocks.h>
 #include <CGAL/fair_with_highlight_lines.h>

@@ -2,7 +2,7 @@
 // Invalid_input with the mesh bit-identical to before, or in a correct result (no NaN or
 // infinity anywhere, only movable vertices moved, no triangle flipped, and what "correct" means
 // for the case). The user manual's "Hostile Input" table lists these cases and their outcomes.
-#include "../model/test_meshes.h"
+#include "test_meshes.h"
 
 #include <CGAL/Aff_transformation_3.h>
 #include <CGAL/Highlight_lines/fairing_building_blocks.h>

@@ -1,6 +1,6 @@
 // The analytic Jacobian of the node positions (eq. 13 linearised through eq. 1 and eq. 3)
 // against central finite differences.
-#include "../model/test_meshes.h"
+#include "test_meshes.h"
 
 #include <CGAL/fair_with_highlight_lines.h>
 

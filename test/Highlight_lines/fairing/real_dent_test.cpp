@@ -9,10 +9,10 @@
 // patch is not fair either, and fairing the region changes it by more than a shallow dent, so the
 // faired region may end further from the undented surface than the dented input (benchmark: up
 // to 2.1 times the input's RMS distance on smooth patches, 3.5 times on rough ones).
-#include "../../../benchmark/Highlight_lines/fairing_quality.h"
-#include "../../../benchmark/Highlight_lines/real_dent_cases.h"
-#include "../flipped_faces.h"
-#include "../forwarding_solver.h"
+#include "fairing_quality.h"
+#include "real_dent_cases.h"
+#include "flipped_faces.h"
+#include "forwarding_solver.h"
 
 #include <CGAL/Highlight_lines/Fairing_report.h>
 #include <CGAL/Highlight_lines/default_light_setup.h>
@@ -158,9 +158,9 @@ protected:
   void SetUp() override
   {
     stem = GetParam();
-    if (!std::ifstream(HB::shared_mesh_path(stem)))
-      GTEST_SKIP() << HB::shared_mesh_path(stem) << " not found";
-    ASSERT_TRUE(HB::read_shared_mesh(stem, mesh)) << HB::shared_mesh_path(stem);
+    if (!std::ifstream(test::shared_data(stem + ".off")))
+      GTEST_SKIP() << test::shared_data(stem + ".off") << " not found";
+    ASSERT_TRUE(test::read_shared_mesh(stem + ".off", mesh)) << test::shared_data(stem + ".off");
   }
 
   std::string stem;
@@ -311,9 +311,9 @@ TEST(RealDentTail, StoppingOnTheGeometricTailEndsWithinEpsilonOfTheLimit)
 {
   const double epsilon = 1e-3;
   std::size_t cases = 0, stopped_on_the_tail = 0;
-  for (const char* stem : HB::shared_mesh_stems()) {
+  for (const std::string stem : HB::shared_mesh_stems()) {
     Mesh mesh;
-    if (!HB::read_shared_mesh(stem, mesh))
+    if (!test::read_shared_mesh(stem + ".off", mesh))
       continue;
     HB::Real_dent_options options;
     options.max_centres = 2;
@@ -357,9 +357,9 @@ TEST(RealDentTail, ExtrapolatingASlowTailEndsWithinEpsilonOfTheLimit)
   const double epsilon = 1e-3;
   std::size_t extrapolating = 0;
   bool any_mesh = false;
-  for (const char* stem : {"bunny", "camelhead"}) {
+  for (const std::string stem : {"bunny", "camelhead"}) {
     Mesh mesh;
-    if (!HB::read_shared_mesh(stem, mesh))
+    if (!test::read_shared_mesh(stem + ".off", mesh))
       continue;
     any_mesh = true;
     HB::Real_dent_options options;
@@ -407,8 +407,8 @@ TEST(RealDentTail, ExtrapolatingASlowTailEndsWithinEpsilonOfTheLimit)
 TEST(RealRegion, TheDefaultEnergyDoesNotDigAPocketIntoANarrowPart)
 {
   Mesh mesh;
-  if (!HB::read_shared_mesh("camelhead", mesh))
-    GTEST_SKIP() << HB::shared_mesh_path("camelhead") << " not found";
+  if (!test::read_shared_mesh("camelhead.off", mesh))
+    GTEST_SKIP() << test::shared_data("camelhead.off") << " not found";
   const std::pair<std::uint32_t, std::uint32_t> face_ranges[] = {
       {78, 79},       {81, 82},       {94, 94},       {121, 122},     {387, 389},
       {392, 392},     {406, 407},     {512, 513},     {530, 533},     {535, 535},
@@ -432,7 +432,7 @@ TEST(RealRegion, TheDefaultEnergyDoesNotDigAPocketIntoANarrowPart)
   std::vector<Mesh::Vertex_index> movable;
   HL::movable_vertices(mesh, region, std::back_inserter(movable));
   ASSERT_EQ(movable.size(), 116u);
-  const double e = HB::real_dent_detail::global_mean_edge_length(mesh);
+  const double e = test::mean_edge_length(mesh);
   const auto lights = HL::default_light_setup(mesh, HLP::number_of_lines(30));
 
   Mesh faired = mesh;
@@ -457,11 +457,11 @@ TEST(RealRegion, FairingUndentedRegionsChangesThemLessThanPMPFair)
 {
   std::vector<double> ratios;
   double largest_move = 0;
-  for (const char* stem : HB::shared_mesh_stems()) {
+  for (const std::string stem : HB::shared_mesh_stems()) {
     Mesh mesh;
-    if (!HB::read_shared_mesh(stem, mesh))
+    if (!test::read_shared_mesh(stem + ".off", mesh))
       continue;
-    const double e = HB::real_dent_detail::global_mean_edge_length(mesh);
+    const double e = test::mean_edge_length(mesh);
     const auto lights = HL::default_light_setup(mesh, HLP::number_of_lines(30));
     for (const Mesh::Vertex_index centre : HB::seeded_vertices(mesh, 8, 5)) {
       SCOPED_TRACE(std::string(stem) + " v" + std::to_string(std::size_t(centre)));

@@ -1,9 +1,9 @@
 // The fairing's step control: flips are judged against the input and held back locally, a
 // stall returns the best iterate with a status instead of throwing, and the trust region lets
 // deep dents converge within the iteration bound.
-#include "../forwarding_solver.h"
-#include "../flipped_faces.h"
-#include "../model/test_meshes.h"
+#include "forwarding_solver.h"
+#include "flipped_faces.h"
+#include "test_meshes.h"
 
 #include <CGAL/Highlight_lines/fairing_building_blocks.h>
 #include <CGAL/Highlight_lines/internal/flip_guard.h>

@@ -88,6 +88,8 @@
 // the highlight lines computed on the region only), region_triangle_quality() (the smallest
 // corner angle, the slivers and the folded triangles of a region).
 
+#include "test_meshes.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Highlight_lines/Light_setup.h>
 #include <CGAL/Surface_mesh.h>
@@ -163,15 +165,6 @@ typedef Dent_mesh::Face_index Face;
 
 constexpr double pi = 3.14159265358979323846;
 
-inline Vector face_cross(const Dent_mesh& mesh, Face f)
-{
-  const auto h = mesh.halfedge(f);
-  const Point& p = mesh.point(mesh.source(h));
-  const Point& q = mesh.point(mesh.target(h));
-  const Point& r = mesh.point(mesh.target(mesh.next(h)));
-  return CGAL::cross_product(q - p, r - p);
-}
-
 inline double length(const Vector& v)
 {
   return std::sqrt(v.squared_length());
@@ -189,7 +182,7 @@ inline std::vector<Vector> vertex_normals(const Dent_mesh& mesh)
 {
   std::vector<Vector> normal(mesh.number_of_vertices(), CGAL::NULL_VECTOR);
   for (Face f : mesh.faces()) {
-    const Vector c = face_cross(mesh, f);
+    const Vector c = test::face_cross_product(mesh, f);
     for (Vertex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
       normal[std::size_t(v)] = normal[std::size_t(v)] + c;
   }
@@ -199,19 +192,6 @@ inline std::vector<Vector> vertex_normals(const Dent_mesh& mesh)
       n = n / l;
   }
   return normal;
-}
-
-inline double global_mean_edge_length(const Dent_mesh& mesh)
-{
-  double sum = 0;
-  std::size_t count = 0;
-  for (auto e : mesh.edges()) {
-    const auto h = mesh.halfedge(e);
-    sum +=
-        std::sqrt(CGAL::squared_distance(mesh.point(mesh.source(h)), mesh.point(mesh.target(h))));
-    ++count;
-  }
-  return count > 0 ? sum / double(count) : 0.0;
 }
 
 // Marks over the indices of one kind of mesh element, cleared in O(1) between uses (the
@@ -359,7 +339,7 @@ inline double max_dihedral_degrees(const Dent_mesh& mesh, const std::vector<Face
       if (g == Dent_mesh::null_face() || !scratch.faces.contains(std::size_t(g)) ||
           !(region[i] < g))
         continue;
-      largest = (std::max)(largest, angle_degrees(cross[i], face_cross(mesh, g)));
+      largest = (std::max)(largest, angle_degrees(cross[i], test::face_cross_product(mesh, g)));
     }
   return largest;
 }
@@ -398,7 +378,7 @@ inline Patch examine(const Dent_mesh& mesh, Vertex c, double global_edge,
       }
       number_of_edges += scratch.edges.insert(std::size_t(mesh.edge(h))) ? 1 : 0;
     }
-    cross.push_back(face_cross(mesh, f));
+    cross.push_back(test::face_cross_product(mesh, f));
     if (!(cross.back().squared_length() > 0))
       return patch;
     sum = sum + cross.back();
@@ -447,7 +427,7 @@ inline Patch remeasure(const Dent_mesh& mesh, Vertex c, const Patch& chosen, dou
       if (scratch.vertices.insert(std::size_t(v)))
         patch.radius = (std::max)(patch.radius,
                                   std::sqrt(CGAL::squared_distance(mesh.point(v), mesh.point(c))));
-    cross.push_back(face_cross(mesh, f));
+    cross.push_back(test::face_cross_product(mesh, f));
     sum = sum + cross.back();
   }
   if (!(patch.mean_edge_length > 0) || !(length(sum) > 0))
@@ -495,7 +475,7 @@ inline void jitter_tangentially(Dent_mesh& mesh, double amount, std::uint32_t se
   namespace D = real_dent_detail;
   if (!(amount > 0) || mesh.number_of_vertices() == 0 || mesh.has_garbage())
     return;
-  const double radius = amount * D::global_mean_edge_length(mesh);
+  const double radius = amount * test::mean_edge_length(mesh);
   const std::vector<D::Vector> normal = D::vertex_normals(mesh);
   std::seed_seq seq{seed, std::uint32_t(0x6a69), std::uint32_t(0x74746572)};
   std::mt19937 rng(seq);
@@ -532,7 +512,7 @@ inline std::vector<Real_dent_case> make_real_dent_cases(const Dent_mesh& mesh,
   std::vector<Real_dent_case> cases;
   if (mesh.number_of_vertices() == 0 || mesh.has_garbage())
     return cases;
-  const double global_edge = D::global_mean_edge_length(mesh);
+  const double global_edge = test::mean_edge_length(mesh);
   const std::vector<D::Vector> normal = D::vertex_normals(mesh);
 
   // Candidate order: a portable Fisher–Yates shuffle.
@@ -606,7 +586,7 @@ inline std::vector<Real_dent_case> make_real_dent_cases(const Dent_mesh& mesh,
     jittered = mesh;
     jitter_tangentially(jittered, options.jitter, seed);
     jittered_normal = D::vertex_normals(jittered);
-    const double jittered_edge = D::global_mean_edge_length(jittered);
+    const double jittered_edge = test::mean_edge_length(jittered);
     for (Kept& k : kept)
       k.patch = D::remeasure(jittered, k.centre, k.patch, jittered_edge, scratch);
   }
@@ -692,21 +672,6 @@ inline const std::array<const char*, 6>& shared_mesh_stems()
   return stems;
 }
 
-#ifdef HIGHLIGHT_LINES_SHARED_DATA_DIR
-/// The path of a mesh of the developers' test set: HIGHLIGHT_LINES_SHARED_DATA_DIR/STEM.off.
-inline std::string shared_mesh_path(const std::string& stem)
-{
-  return std::string(HIGHLIGHT_LINES_SHARED_DATA_DIR) + "/" + stem + ".off";
-}
-
-/// Reads that mesh into `mesh`; false if the file is missing, unreadable or empty.
-inline bool read_shared_mesh(const std::string& stem, Dent_mesh& mesh)
-{
-  const std::string path = shared_mesh_path(stem);
-  return std::ifstream(path) && CGAL::IO::read_polygon_mesh(path, mesh) && !mesh.is_empty();
-}
-#endif
-
 /// A region of the mesh as it is, anywhere on it (no patch selection, no dent): the faces whose
 /// three vertices lie within `rings` edges of `centre`.
 inline std::vector<Dent_mesh::Face_index>
@@ -756,8 +721,8 @@ std::size_t count_flipped_faces(const Dent_mesh& mesh, const Dent_mesh& referenc
 {
   std::size_t flipped = 0;
   for (Dent_mesh::Face_index f : faces) {
-    const Dent_kernel::Vector_3 r = real_dent_detail::face_cross(reference, f);
-    if (r.squared_length() > 0 && !(real_dent_detail::face_cross(mesh, f) * r > 0))
+    const Dent_kernel::Vector_3 r = test::face_cross_product(reference, f);
+    if (r.squared_length() > 0 && !(test::face_cross_product(mesh, f) * r > 0))
       ++flipped;
   }
   return flipped;
@@ -835,7 +800,7 @@ Region_triangle_quality region_triangle_quality(const Dent_mesh& mesh, const Fac
     }
     quality.smallest_corner_degrees = (std::min)(quality.smallest_corner_degrees, smallest);
     quality.slivers += smallest < sliver_degrees ? 1 : 0;
-    if (!(D::face_cross(mesh, f) * corner_normals > 0))
+    if (!(test::face_cross_product(mesh, f) * corner_normals > 0))
       quality.folded.push_back(f);
   }
   return quality;

@@ -1,8 +1,9 @@
-// Mesh generators and helpers shared by the model tests.
+// Mesh generators and helpers shared by the tests and the benchmarks: synthetic meshes, the
+// developers' shared meshes and their unit length ē.
 #ifndef HIGHLIGHT_LINES_TEST_MESHES_H
 #define HIGHLIGHT_LINES_TEST_MESHES_H
 
-#include "../flipped_faces.h"
+#include "flipped_faces.h"
 
 #include <CGAL/Highlight_lines/Light_setup.h>
 
@@ -16,6 +17,7 @@
 #include <array>
 #include <map>
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <random>
 #include <string>
@@ -173,9 +175,30 @@ inline Vector area_weighted_normal(const Surface_mesh& mesh, Surface_mesh::Verte
   return n;
 }
 
+// The path of the shared mesh `name` (a file name, e.g. "bunny.off"), in ../shared/data.
 inline std::string shared_data(const std::string& name)
 {
   return std::string(HIGHLIGHT_LINES_SHARED_DATA_DIR) + "/" + name;
+}
+
+// Reads the shared mesh `name` into `mesh`; false if it is missing, unreadable or empty.
+template <typename Mesh>
+bool read_shared_mesh(const std::string& name, Mesh& mesh)
+{
+  const std::string path = shared_data(name);
+  return std::ifstream(path) && CGAL::IO::read_polygon_mesh(path, mesh) && !is_empty(mesh);
+}
+
+// The mean edge length ē of a Surface_mesh (0 without edges): the unit of the injected dents
+// and of the distances the tests and benchmarks report.
+template <typename Mesh>
+double mean_edge_length(const Mesh& mesh)
+{
+  double sum = 0;
+  for (auto e : edges(mesh))
+    sum +=
+        std::sqrt(CGAL::squared_distance(mesh.point(source(e, mesh)), mesh.point(target(e, mesh))));
+  return num_edges(mesh) > 0 ? sum / double(num_edges(mesh)) : 0.0;
 }
 
 } // namespace test

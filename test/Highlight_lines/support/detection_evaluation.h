@@ -7,6 +7,8 @@
 #ifndef HIGHLIGHT_LINES_BENCHMARK_DETECTION_EVALUATION_H
 #define HIGHLIGHT_LINES_BENCHMARK_DETECTION_EVALUATION_H
 
+#include "test_meshes.h"
+
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -52,15 +54,6 @@ struct Injected_defect
   double height = 0;
 };
 
-inline double mean_edge_length(const Mesh& mesh)
-{
-  double sum = 0;
-  for (auto e : edges(mesh))
-    sum +=
-        std::sqrt(CGAL::squared_distance(mesh.point(source(e, mesh)), mesh.point(target(e, mesh))));
-  return sum / double(num_edges(mesh));
-}
-
 inline bool is_border_near(const Mesh& mesh, vertex_descriptor v, double radius)
 {
   for (auto w : vertices(mesh))
@@ -79,7 +72,7 @@ std::vector<Injected_defect> inject_defects(Mesh& mesh, int count, double radius
                                             double height_in_edges, unsigned seed,
                                             Eligible eligible, double separation = 3)
 {
-  const double e = mean_edge_length(mesh);
+  const double e = test::mean_edge_length(mesh);
   const double radius = radius_in_edges * e, height = height_in_edges * e;
   std::vector<vertex_descriptor> candidates;
   for (auto v : vertices(mesh))
