@@ -681,7 +681,7 @@ OutputIterator detect_highlight_line_irregularities(
     // `lights`: every unit normal lies within 54.7 degrees of one of their normals, so every face
     // is scored by the setups of at least one plane. All have the spacing of `lights`.
     const auto z0 = lights.plane_normal_array(), h0 = lights.light_direction_array();
-    const auto x0 = HL::Light_setup<GeomTraits>::cross(h0, z0);
+    const auto x0 = HL::internal::vector3::cross(h0, z0);
     Vec3 centre{0, 0, 0};
     double reach = 0;
     for (int v = 0; v < nv; ++v) {

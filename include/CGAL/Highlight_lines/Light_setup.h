@@ -5,6 +5,7 @@
 #define CGAL_HIGHLIGHT_LINES_LIGHT_SETUP_H
 
 #include <CGAL/Highlight_lines/Invalid_input.h>
+#include <CGAL/Highlight_lines/internal/vector3.h>
 
 #include <CGAL/Aff_transformation_3.h>
 #include <CGAL/number_utils.h>
@@ -86,7 +87,7 @@ public:
   /// The unit vector `H x Z`, in the light plane, along which light indices grow.
   Vector_3 index_direction() const
   {
-    const auto c = cross(h_, z_);
+    const auto c = internal::vector3::cross(h_, z_);
     return Vector_3(c[0], c[1], c[2]);
   }
   /// The spacing `s` between adjacent light sources.
@@ -95,7 +96,7 @@ public:
   /// The point on light number `m`, in the light plane: `A0 + m·s·(H x Z)`.
   Point_3 point_on_light(long long m) const
   {
-    const auto c = cross(h_, z_);
+    const auto c = internal::vector3::cross(h_, z_);
     const double t = double(m) * s_;
     return Point_3(a_[0] + t * c[0], a_[1] + t * c[1], a_[2] + t * c[2]);
   }
@@ -111,7 +112,7 @@ public:
   {
     std::array<double, 3> k{CGAL::to_double(axis.x()), CGAL::to_double(axis.y()),
                             CGAL::to_double(axis.z())};
-    const double len = std::sqrt(dot(k, k));
+    const double len = std::sqrt(internal::vector3::dot(k, k));
     if (!(len > 0) || !std::isfinite(len) || !std::isfinite(angle))
       throw Invalid_input(Invalid_input::Problem::INVALID_LIGHT_SETUP,
                           "Light_setup::rotated(): the rotation axis must be a finite, non-zero "
@@ -119,8 +120,8 @@ public:
     for (double& c : k)
       c /= len;
     auto rotate = [&](const std::array<double, 3>& v) { // Rodrigues' formula
-      const double c = std::cos(angle), s = std::sin(angle), kv = dot(k, v);
-      const auto kxv = cross(k, v);
+      const double c = std::cos(angle), s = std::sin(angle), kv = internal::vector3::dot(k, v);
+      const auto kxv = internal::vector3::cross(k, v);
       return std::array<double, 3>{v[0] * c + kxv[0] * s + k[0] * kv * (1 - c),
                                    v[1] * c + kxv[1] * s + k[1] * kv * (1 - c),
                                    v[2] * c + kxv[2] * s + k[2] * kv * (1 - c)};
@@ -155,15 +156,6 @@ public:
   const std::array<double, 3>& light_direction_array() const { return h_; }
   const std::array<double, 3>& plane_normal_array() const { return z_; }
   double spacing_value() const { return s_; }
-
-  static std::array<double, 3> cross(const std::array<double, 3>& a, const std::array<double, 3>& b)
-  {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-  }
-  static double dot(const std::array<double, 3>& a, const std::array<double, 3>& b)
-  {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-  }
   /// \endcond
 
 private:
@@ -184,7 +176,8 @@ private:
         fail("non-finite coordinate");
     if (!std::isfinite(s_) || !(s_ > 0))
       fail("the spacing must be a finite positive number");
-    const double lh = std::sqrt(dot(h_, h_)), lz = std::sqrt(dot(z_, z_));
+    const double lh = std::sqrt(internal::vector3::dot(h_, h_)),
+                 lz = std::sqrt(internal::vector3::dot(z_, z_));
     if (!(lh > 0) || !std::isfinite(lh))
       fail("the light direction H is the zero vector or too large");
     if (!(lz > 0) || !std::isfinite(lz))
@@ -193,14 +186,14 @@ private:
       h_[i] /= lh;
       z_[i] /= lz;
     }
-    const double hz = dot(h_, z_);
+    const double hz = internal::vector3::dot(h_, z_);
     if (std::abs(hz) > 1e-6)
       fail("the light direction H must lie in the light plane, i.e. be perpendicular to its "
            "normal Z (H·Z = " +
            std::to_string(hz) + " after normalisation)");
     for (int i = 0; i < 3; ++i)
       h_[i] -= hz * z_[i];
-    const double lh2 = std::sqrt(dot(h_, h_));
+    const double lh2 = std::sqrt(internal::vector3::dot(h_, h_));
     for (double& c : h_)
       c /= lh2;
   }

@@ -97,8 +97,8 @@ default_light_setup(const TriangleMesh& tm,
     const double zn = n[std::size_t(up)];
     if (zn > 0.05) {
       const double w[3] = {p[0] - a[0], p[1] - a[1], p[2] - a[2]};
-      const auto x = Light_setup<Kernel>::cross({w[0], w[1], w[2]}, h);
-      d.push_back(Light_setup<Kernel>::dot(x, n) / zn);
+      const auto x = internal::vector3::cross({w[0], w[1], w[2]}, h);
+      d.push_back(internal::vector3::dot(x, n) / zn);
     }
   }
   if (d.size() < 2)

@@ -13,37 +13,17 @@
 
 namespace {
 using namespace CGAL::Highlight_lines::internal;
-using Vec3 = std::array<double, 3>;
+using namespace CGAL::Highlight_lines::internal::vector3;
 
 const double pi = std::acos(-1.0);
 
-Vec3 add(const Vec3& a, const Vec3& b)
-{
-  return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
-}
-Vec3 sub(const Vec3& a, const Vec3& b)
-{
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-Vec3 scale(double s, const Vec3& a)
-{
-  return {s * a[0], s * a[1], s * a[2]};
-}
-double dot(const Vec3& a, const Vec3& b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-double norm(const Vec3& a)
-{
-  return std::sqrt(dot(a, a));
-}
 double distance(const Vec3& a, const Vec3& b)
 {
-  return norm(sub(a, b));
+  return norm(a - b);
 }
 Vec3 unit(const Vec3& a)
 {
-  return scale(1 / norm(a), a);
+  return (1 / norm(a)) * a;
 }
 
 Vec3 random_vector(std::mt19937& rng, double range = 1)
@@ -62,14 +42,14 @@ Configuration random_configuration(std::mt19937& rng, double max_angle)
 {
   Configuration c;
   c.q0 = random_vector(rng, 3);
-  c.q1 = add(c.q0, random_vector(rng, 2));
-  const Vec3 chord = unit(sub(c.q1, c.q0));
+  c.q1 = c.q0 + random_vector(rng, 2);
+  const Vec3 chord = unit(c.q1 - c.q0);
   auto tilted = [&](double length) {
     // chord rotated by an angle below max_angle towards a random perpendicular direction.
     Vec3 r = random_vector(rng);
-    r = unit(sub(r, scale(dot(r, chord), chord)));
+    r = unit(r - dot(r, chord) * chord);
     const double angle = std::uniform_real_distribution<double>(0, max_angle)(rng);
-    return scale(length, add(scale(std::cos(angle), chord), scale(std::sin(angle), r)));
+    return length * (std::cos(angle) * chord + std::sin(angle) * r);
   };
   c.t0 = tilted(0.3);
   c.t1 = tilted(4.0);
@@ -144,11 +124,10 @@ TEST(OghCurve, CoefficientsMinimiseTheStrainEnergy)
     ASSERT_EQ(h.status(), Ogh_curve_status::OK);
     const Vec3 u0 = unit(c.t0), u1 = unit(c.t1);
     auto strain_energy = [&](double a0, double a1) {
-      const Vec3 p0 = c.q0, p1 = add(c.q0, scale(a0 / 3, u0)), p2 = sub(c.q1, scale(a1 / 3, u1)),
-                 p3 = c.q1;
-      const Vec3 first = add(sub(p2, scale(2, p1)), p0), second = add(sub(p3, scale(2, p2)), p1);
+      const Vec3 p0 = c.q0, p1 = c.q0 + (a0 / 3) * u0, p2 = c.q1 - (a1 / 3) * u1, p3 = c.q1;
+      const Vec3 first = p2 - 2 * p1 + p0, second = p3 - 2 * p2 + p1;
       auto squared_second_derivative = [&](double t) {
-        const Vec3 b = scale(6, add(scale(1 - t, first), scale(t, second)));
+        const Vec3 b = 6 * ((1 - t) * first + t * second);
         return dot(b, b);
       };
       return (squared_second_derivative(0) + 4 * squared_second_derivative(0.5) +
@@ -179,7 +158,7 @@ TEST(OghCurve, LengthsOfTheGivenTangentsDoNotMatter)
   std::mt19937 rng(3);
   const Configuration c = random_configuration(rng, pi / 2);
   const Ogh_curve h(c.q0, c.t0, c.q1, c.t1);
-  const Ogh_curve g(c.q0, scale(17, c.t0), c.q1, scale(1e-3, c.t1));
+  const Ogh_curve g(c.q0, 17 * c.t0, c.q1, 1e-3 * c.t1);
   for (double t = 0; t <= 1; t += 0.125)
     EXPECT_LT(distance(h.point(t), g.point(t)), 1e-14 * (1 + norm(c.q0)));
 }
@@ -187,14 +166,14 @@ TEST(OghCurve, LengthsOfTheGivenTangentsDoNotMatter)
 TEST(OghCurve, StraightConfigurationIsTheUniformlyParameterisedSegment)
 {
   const Vec3 q0{1, -2, 0.5}, q1{4, 2, -0.5};
-  const Vec3 d = sub(q1, q0);
-  const Ogh_curve h(q0, scale(0.1, d), q1, scale(3, d));
+  const Vec3 d = q1 - q0;
+  const Ogh_curve h(q0, 0.1 * d, q1, 3 * d);
   ASSERT_TRUE(h.keeps_tangent_directions());
   EXPECT_NEAR(h.a0(), norm(d), 1e-14 * norm(d));
   EXPECT_NEAR(h.a1(), norm(d), 1e-14 * norm(d));
   EXPECT_NEAR(h.length(), norm(d), 1e-13 * norm(d));
   for (double s = 0; s <= 1; s += 1.0 / 64) {
-    const Vec3 expected = add(q0, scale(s, d));
+    const Vec3 expected = q0 + s * d;
     EXPECT_LT(distance(h.point_at_arc_length_fraction(s), expected), 1e-12 * norm(d)) << s;
     EXPECT_LT(distance(h.point(s), expected), 1e-14 * norm(d)) << s;
   }
@@ -281,8 +260,7 @@ TEST(OghTarget, SShapeFallsBackToTwoSegmentsJoinedG1)
   EXPECT_EQ(first.q1(), second.q0());
   // The joint is the middle of the cubic Hermite curve with chord-length end tangents.
   const double chord = distance(q0, q1);
-  const Vec3 hermite_middle =
-      add(scale(0.5, add(q0, q1)), scale(chord / 8, sub(unit(t0), unit(t1))));
+  const Vec3 hermite_middle = 0.5 * (q0 + q1) + (chord / 8) * (unit(t0) - unit(t1));
   EXPECT_LT(distance(first.q1(), hermite_middle), 1e-15);
   EXPECT_LT(distance(first.t0(), unit(t0)), 1e-15);
   EXPECT_LT(distance(second.t1(), unit(t1)), 1e-15);
@@ -395,7 +373,7 @@ TEST(OghTarget, DegenerateInputGivesAStatusNotNaN)
   // Tiny and huge tangents are directions like any other.
   const Ogh_curve reference(q0, t, q1, t);
   for (const double length : {1e-300, 1e-320, 1e300}) {
-    const Ogh_curve h(q0, scale(length, t), q1, scale(length, t));
+    const Ogh_curve h(q0, length * t, q1, length * t);
     EXPECT_EQ(h.status(), Ogh_curve_status::OK);
     EXPECT_LT(distance(h.point(0.3), reference.point(0.3)), 1e-14);
   }

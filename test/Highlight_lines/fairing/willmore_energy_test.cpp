@@ -18,38 +18,14 @@
 namespace {
 using namespace CGAL::Highlight_lines::internal;
 using CGAL::Highlight_lines::Invalid_input;
-using Vec3 = std::array<double, 3>;
+using namespace CGAL::Highlight_lines::internal::vector3;
 using Triangle = std::array<int, 3>;
 
 const double pi = std::acos(-1.0);
 
-Vec3 add(const Vec3& a, const Vec3& b)
-{
-  return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
-}
-Vec3 sub(const Vec3& a, const Vec3& b)
-{
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-Vec3 scale(double s, const Vec3& a)
-{
-  return {s * a[0], s * a[1], s * a[2]};
-}
-double dot(const Vec3& a, const Vec3& b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-Vec3 cross(const Vec3& a, const Vec3& b)
-{
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double norm(const Vec3& a)
-{
-  return std::sqrt(dot(a, a));
-}
 Vec3 unit(const Vec3& a)
 {
-  return scale(1 / norm(a), a);
+  return (1 / norm(a)) * a;
 }
 
 struct Mesh
@@ -78,7 +54,7 @@ Mesh icosphere(int level)
       const auto found = midpoint.find(key);
       if (found != midpoint.end())
         return found->second;
-      m.positions.push_back(unit(add(m.positions[std::size_t(a)], m.positions[std::size_t(b)])));
+      m.positions.push_back(unit(m.positions[std::size_t(a)] + m.positions[std::size_t(b)]));
       return midpoint[key] = int(m.positions.size()) - 1;
     };
     std::vector<Triangle> finer;
@@ -164,7 +140,7 @@ std::vector<Vec3> displaced(const Problem& p, const Eigen::VectorXd& x)
   std::vector<Vec3> positions = p.mesh.positions;
   for (std::size_t v = 0; v < p.movable.size(); ++v)
     positions[std::size_t(p.movable[v])] =
-        add(positions[std::size_t(p.movable[v])], scale(x[Eigen::Index(v)], p.directions[v]));
+        positions[std::size_t(p.movable[v])] + x[Eigen::Index(v)] * p.directions[v];
   return positions;
 }
 
@@ -190,21 +166,20 @@ Vec3 reference_mean_curvature_normal(const Mesh& m, int i)
     const Vec3& a = m.positions[std::size_t(t[0])];
     const Vec3& b = m.positions[std::size_t(t[1])];
     const Vec3& c = m.positions[std::size_t(t[2])];
-    area += norm(cross(sub(b, a), sub(c, a))) / 6;
+    area += norm(cross(b - a, c - a)) / 6;
     for (int j : t) {
       if (j == i)
         continue;
       const int k = t[0] + t[1] + t[2] - i - j; // the third corner, opposite edge ij
-      const Vec3 u = sub(m.positions[std::size_t(i)], m.positions[std::size_t(k)]);
-      const Vec3 w = sub(m.positions[std::size_t(j)], m.positions[std::size_t(k)]);
+      const Vec3 u = m.positions[std::size_t(i)] - m.positions[std::size_t(k)];
+      const Vec3 w = m.positions[std::size_t(j)] - m.positions[std::size_t(k)];
       const double angle = std::atan2(norm(cross(u, w)), dot(u, w));
       cotangent_sum[j] += 1 / std::tan(angle);
     }
   }
   Vec3 k{0, 0, 0};
   for (const auto& [j, cot] : cotangent_sum)
-    k = add(k,
-            scale(cot / (2 * area), sub(m.positions[std::size_t(i)], m.positions[std::size_t(j)])));
+    k = k + (cot / (2 * area)) * (m.positions[std::size_t(i)] - m.positions[std::size_t(j)]);
   return k;
 }
 
@@ -217,7 +192,7 @@ TEST(WillmoreEnergy, MeanCurvatureNormalMatchesTheEdgeFormula)
   for (std::size_t row = 0; row < p.energy_vertices.size(); ++row) {
     const Vec3 k = mean_curvature_normal(frozen, row, p.mesh.positions);
     const Vec3 expected = reference_mean_curvature_normal(p.mesh, p.energy_vertices[row]);
-    EXPECT_LT(norm(sub(k, expected)), 1e-10 * (1 + norm(expected))) << p.energy_vertices[row];
+    EXPECT_LT(norm(k - expected), 1e-10 * (1 + norm(expected))) << p.energy_vertices[row];
   }
 }
 
@@ -321,7 +296,7 @@ TEST(WillmoreEnergy, NormalPartQuadraticEqualsDirectEvaluation)
   std::uniform_real_distribution<double> u(-1, 1);
   for (std::size_t i = 0; i < p.energy_vertices.size(); ++i) {
     const Vec3 n{u(rng), u(rng), 1.0};
-    normals.push_back(scale(1 / norm(n), n));
+    normals.push_back((1 / norm(n)) * n);
   }
   const Dense_quadratic d = dense_willmore_quadratic(p, frozen, &normals);
   auto normal_energy = [&](const std::vector<Vec3>& positions) {
@@ -477,7 +452,7 @@ TEST(WillmoreEnergy, InvariantUnderScalingAndRigidMotions)
   for (const double lambda : {1e-3, 3.7, 250.0}) {
     std::vector<Vec3> scaled;
     for (const Vec3& v : p.mesh.positions)
-      scaled.push_back(scale(lambda, v));
+      scaled.push_back(lambda * v);
     const Willmore_quadratic s = quadratic_of(scaled, p.directions);
     EXPECT_NEAR(s.r, q.r, 1e-12 * q.r) << lambda;
     EXPECT_LT(Eigen::MatrixXd(lambda * lambda * s.Q - q.Q).cwiseAbs().maxCoeff(), 1e-12 * q_norm);
@@ -488,12 +463,12 @@ TEST(WillmoreEnergy, InvariantUnderScalingAndRigidMotions)
   const Vec3 axis = unit({0.3, -0.7, 0.6});
   const double angle = 1.1, co = std::cos(angle), si = std::sin(angle);
   auto rotate = [&](const Vec3& v) { // Rodrigues
-    return add(add(scale(co, v), scale(si, cross(axis, v))), scale((1 - co) * dot(axis, v), axis));
+    return co * v + si * cross(axis, v) + (1 - co) * dot(axis, v) * axis;
   };
   const Vec3 shift{40, -25, 13};
   std::vector<Vec3> moved, turned_directions;
   for (const Vec3& v : p.mesh.positions)
-    moved.push_back(add(rotate(v), shift));
+    moved.push_back(rotate(v) + shift);
   for (const Vec3& d : p.directions)
     turned_directions.push_back(rotate(d));
   const Willmore_quadratic m = quadratic_of(moved, turned_directions);
@@ -725,7 +700,7 @@ TEST(CurvatureVariationEnergy, VanishesOnPlanesIsMuTimesWillmoreOnCylindersAndIs
   // Scale: the bumpy patch and three times it, with ℓ three times as long.
   Problem bumpy = variation_problem(rng, 3), scaled = bumpy;
   for (Vec3& point : scaled.mesh.positions)
-    point = scale(3, point);
+    point = 3 * point;
   const Frozen_curvature_variation small = frozen_variation(bumpy, 0.7),
                                    large = frozen_variation(scaled, 2.1);
   const std::vector<Vec3> bumpy_normals = row_normals(small);

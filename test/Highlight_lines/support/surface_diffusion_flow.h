@@ -54,6 +54,8 @@
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/properties.h>
 
+#include <CGAL/Highlight_lines/internal/vector3.h>
+
 #include <Eigen/Sparse>
 #include <Eigen/SparseLU>
 
@@ -92,20 +94,7 @@ struct Surface_diffusion_flow_report
 
 namespace sdf_detail {
 
-using Vec3 = std::array<double, 3>;
-
-inline Vec3 sub(const Vec3& a, const Vec3& b)
-{
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-inline double dot(const Vec3& a, const Vec3& b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-inline Vec3 cross(const Vec3& a, const Vec3& b)
-{
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
+using namespace CGAL::Highlight_lines::internal::vector3;
 
 // The part of the mesh the flow reads, in flat arrays with local vertex ids.
 struct Local_patch
@@ -139,13 +128,13 @@ inline Frozen_operator freeze(const Local_patch& patch)
     const auto& t = patch.triangles[f];
     const Vec3* p[3] = {&patch.position[std::size_t(t[0])], &patch.position[std::size_t(t[1])],
                         &patch.position[std::size_t(t[2])]};
-    face_cross[f] = cross(sub(*p[1], *p[0]), sub(*p[2], *p[0]));
+    face_cross[f] = cross(*p[1] - *p[0], *p[2] - *p[0]);
     const double double_area = std::sqrt(dot(face_cross[f], face_cross[f]));
     if (!(double_area > 0) || !std::isfinite(double_area))
       throw std::runtime_error("surface_diffusion_flow(): a degenerate triangle");
     for (int k = 0; k < 3; ++k)
       cotangent[f][std::size_t(k)] =
-          dot(sub(*p[(k + 1) % 3], *p[k]), sub(*p[(k + 2) % 3], *p[k])) / double_area;
+          dot(*p[(k + 1) % 3] - *p[k], *p[(k + 2) % 3] - *p[k]) / double_area;
   }
 
   Frozen_operator op;
@@ -183,7 +172,7 @@ inline Frozen_operator freeze(const Local_patch& patch)
     Vec3 K{0, 0, 0};
     for (auto& entry : w) {
       entry.second /= 2 * area;
-      const Vec3 e = sub(patch.position[std::size_t(i)], patch.position[std::size_t(entry.first)]);
+      const Vec3 e = patch.position[std::size_t(i)] - patch.position[std::size_t(entry.first)];
       for (int k = 0; k < 3; ++k)
         K[std::size_t(k)] += entry.second * e[std::size_t(k)];
     }
@@ -320,10 +309,10 @@ surface_diffusion_flow(TriangleMesh& tm, const FaceRange& region,
       p[std::size_t(k++ % 3)] = {CGAL::to_double(q.x()), CGAL::to_double(q.y()),
                                  CGAL::to_double(q.z())};
     }
-    const Vec3 c = cross(sub(p[1], p[0]), sub(p[2], p[0]));
+    const Vec3 c = cross(p[1] - p[0], p[2] - p[0]);
     region_area += 0.5 * std::sqrt(dot(c, c));
     for (int e = 0; e < 3; ++e) { // every interior edge twice, border edges once: fine for a mean
-      const Vec3 d = sub(p[std::size_t((e + 1) % 3)], p[std::size_t(e)]);
+      const Vec3 d = p[std::size_t((e + 1) % 3)] - p[std::size_t(e)];
       edge_sum += std::sqrt(dot(d, d));
       ++edge_count;
     }

@@ -128,24 +128,22 @@ Pieces_found find_line_pieces(const Model& model, const Fairing_region& region)
 // over the one or two nearest nodes, keeps edge-scale wiggles of the line out of the tangent.
 inline Vec3 fitted_end_tangent(const Vec3& p, const std::vector<Vec3>& previous, double reach)
 {
-  auto sub = [](const Vec3& a, const Vec3& b) {
-    return Vec3{a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-  };
+  using namespace vector3;
   std::vector<std::pair<double, Vec3>> samples; // (t < 0, point - p)
   double t = 0;
   Vec3 last = p;
   for (const Vec3& q : previous) {
-    const Vec3 d = sub(q, last);
-    t -= std::sqrt(dot3(d, d));
+    const Vec3 d = q - last;
+    t -= std::sqrt(vector3::dot(d, d));
     if (!samples.empty() && -t > reach)
       break;
-    samples.emplace_back(t, sub(q, p));
+    samples.emplace_back(t, q - p);
     last = q;
   }
   if (samples.empty())
     return {0, 0, 0};
   if (samples.size() == 1 || !(samples.front().first < 0))
-    return sub(p, previous.front());
+    return p - previous.front();
   // Normal equations of min Σ |a t_i + b t_i² - (q_i - p)|².
   double s2 = 0, s3 = 0, s4 = 0;
   Vec3 r1{0, 0, 0}, r2{0, 0, 0};
@@ -161,7 +159,7 @@ inline Vec3 fitted_end_tangent(const Vec3& p, const std::vector<Vec3>& previous,
   }
   const double det = s2 * s4 - s3 * s3;
   if (!(std::abs(det) > 1e-12 * s2 * s4))
-    return sub(p, previous.front());
+    return p - previous.front();
   Vec3 a;
   for (int k = 0; k < 3; ++k)
     a[std::size_t(k)] = (s4 * r1[std::size_t(k)] - s3 * r2[std::size_t(k)]) / det;

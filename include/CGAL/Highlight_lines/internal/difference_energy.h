@@ -65,7 +65,7 @@ void complete_matched_piece(const Model& model, const Desired_line& d, Matched_p
   std::vector<double> chord(p.size(), 0.0);
   for (std::size_t i = 1; i < p.size(); ++i) {
     const Vec3 e{p[i][0] - p[i - 1][0], p[i][1] - p[i - 1][1], p[i][2] - p[i - 1][2]};
-    chord[i] = chord[i - 1] + std::sqrt(dot3(e, e));
+    chord[i] = chord[i - 1] + std::sqrt(vector3::dot(e, e));
   }
   const double total = chord.back() > 0 ? chord.back() : 1;
   for (std::size_t i = 1; i + 1 < p.size(); ++i) {
@@ -142,7 +142,7 @@ double difference_energy(const Model& model, const std::vector<Matched_piece>& p
       const Vec3 q = node_position(model, piece.nodes[i + 1]);
       const Vec3 e{q[0] - piece.targets[i][0], q[1] - piece.targets[i][1],
                    q[2] - piece.targets[i][2]};
-      value += piece.weights[i] * dot3(e, e);
+      value += piece.weights[i] * vector3::dot(e, e);
     }
   return value / (length_scale * length_scale * length_scale);
 }
@@ -178,10 +178,10 @@ double add_difference_quadratic(const Model& model, const std::vector<Matched_pi
                    q[2] - piece.targets[i][2]};
       const double l = piece.weights[i];
       for (const auto& a : row) {
-        add_q(a.first, 2 * w * l * dot3(a.second, r));
+        add_q(a.first, 2 * w * l * vector3::dot(a.second, r));
         for (const auto& b : row)
           if (a.first <= b.first) {
-            const double value = 2 * w * l * dot3(a.second, b.second);
+            const double value = 2 * w * l * vector3::dot(a.second, b.second);
             add_P(a.first, b.first, value);
             if (a.first == b.first)
               trace += value;

@@ -80,7 +80,7 @@ public:
     for (std::size_t f = 0; f < lm.face_vertices.size(); ++f)
       if (region_.face_in_region[f]) {
         const Vec3 c = face_cross(int(f));
-        area += 0.5 * std::sqrt(dot3(c, c));
+        area += 0.5 * std::sqrt(vector3::dot(c, c));
       }
     mean_edge_length_ = length_sum / double((std::max)(edges, std::size_t(1)));
     length_scale_ = std::sqrt(area);
@@ -232,8 +232,8 @@ private:
   {
     const auto& c = sweeper_.local_mesh().face_vertices[std::size_t(f)];
     const Vec3 p0 = position(c[0]), p1 = position(c[1]), p2 = position(c[2]);
-    return cross3({p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]},
-                  {p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]});
+    return vector3::cross({p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]},
+                          {p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]});
   }
   // Whether the normal of face f opposes (or is orthogonal to) the sum of the unit vertex
   // normals at its corners: a triangle folded over a neighbour.
@@ -245,7 +245,7 @@ private:
       for (int k = 0; k < 3; ++k)
         corner_normals[std::size_t(k)] += m[std::size_t(k)];
     }
-    return !(dot3(face_cross(f), corner_normals) > 0);
+    return !(vector3::dot(face_cross(f), corner_normals) > 0);
   }
   // The smallest corner angle of face f, in radians.
   double smallest_angle(int f) const
@@ -256,8 +256,9 @@ private:
       const Vec3 p = position(c[std::size_t(k)]), a = position(c[std::size_t((k + 1) % 3)]),
                  b = position(c[std::size_t((k + 2) % 3)]);
       const Vec3 u{a[0] - p[0], a[1] - p[1], a[2] - p[2]}, w{b[0] - p[0], b[1] - p[1], b[2] - p[2]};
-      const Vec3 n = cross3(u, w);
-      smallest = (std::min)(smallest, std::atan2(std::sqrt(dot3(n, n)), dot3(u, w)));
+      const Vec3 n = vector3::cross(u, w);
+      smallest =
+          (std::min)(smallest, std::atan2(std::sqrt(vector3::dot(n, n)), vector3::dot(u, w)));
     }
     return smallest;
   }

@@ -46,12 +46,12 @@ public:
     const Vec3& p0 = points[std::size_t(c[0])];
     const Vec3& p1 = points[std::size_t(c[1])];
     const Vec3& p2 = points[std::size_t(c[2])];
-    const Vec3 n = cross3({p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]},
-                          {p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]});
+    const Vec3 n = vector3::cross({p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]},
+                                  {p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]});
     const Vec3& reference = input_cross_[j];
     if (reference == Vec3{0, 0, 0})
-      return !(dot3(n, n) > 0);
-    return !(dot3(n, reference) > 0);
+      return !(vector3::dot(n, n) > 0);
+    return !(vector3::dot(n, reference) > 0);
   }
 
   // The faces that flip with their corners at `points`.

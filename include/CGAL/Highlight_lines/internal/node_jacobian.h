@@ -14,20 +14,11 @@
 #include <utility>
 #include <vector>
 
+#include <CGAL/Highlight_lines/internal/vector3.h>
+
 namespace CGAL {
 namespace Highlight_lines {
 namespace internal {
-
-typedef std::array<double, 3> Vec3;
-
-inline Vec3 cross3(const Vec3& a, const Vec3& b)
-{
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-inline double dot3(const Vec3& a, const Vec3& b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
 
 // Derivatives of node positions with respect to the normal displacements x_k of the movable
 // vertices (V_k -> V_k + x_k N_k), for the Gauss–Newton form of q_diff,
@@ -151,26 +142,27 @@ private:
         const Vec3 p_next = point(c[std::size_t((j + 1) % 3)]),
                    p_prev = point(c[std::size_t((j + 2) % 3)]);
         const Vec3 d =
-            cross3(directions_[std::size_t(var)],
-                   {p_next[0] - p_prev[0], p_next[1] - p_prev[1], p_next[2] - p_prev[2]});
+            vector3::cross(directions_[std::size_t(var)],
+                           {p_next[0] - p_prev[0], p_next[1] - p_prev[1], p_next[2] - p_prev[2]});
         add_to_row(dn, var, d);
       }
     }
     const Vec3 p = point(v), n = normal(v);
-    const Vec3 x = cross3({p[0] - a_[0], p[1] - a_[1], p[2] - a_[2]}, h_);
-    const double num = dot3(x, n), den = dot3(z_, n);
+    const Vec3 x = vector3::cross({p[0] - a_[0], p[1] - a_[1], p[2] - a_[2]}, h_);
+    const double num = vector3::dot(x, n), den = vector3::dot(z_, n);
     result.clear();
     result.reserve(dn.size() + 1);
     const int own = region_.variable[std::size_t(v)];
     for (const auto& e : dn) {
-      double dnum = dot3(x, e.second);
+      double dnum = vector3::dot(x, e.second);
       if (e.first == own)
-        dnum += dot3(cross3(directions_[std::size_t(own)], h_), n);
-      const double dden = dot3(z_, e.second);
+        dnum += vector3::dot(vector3::cross(directions_[std::size_t(own)], h_), n);
+      const double dden = vector3::dot(z_, e.second);
       result.emplace_back(e.first, (dnum * den - num * dden) / (den * den));
     }
     if (own >= 0 && dn.empty()) // a vertex moved without any face around: only its position
-      result.emplace_back(own, dot3(cross3(directions_[std::size_t(own)], h_), n) / den);
+      result.emplace_back(own,
+                          vector3::dot(vector3::cross(directions_[std::size_t(own)], h_), n) / den);
   }
 
   const Fairing_region& region_;

@@ -90,6 +90,8 @@ inline void symmetric_eigen(const double (&c)[3][3], std::array<double, 3>& valu
 }
 
 } // namespace vector3
+
+using vector3::Vec3;
 } // namespace internal
 } // namespace Highlight_lines
 } // namespace CGAL
