@@ -396,7 +396,8 @@ void draw_scene(const Session& session, const Draw_arrays& arrays, const Camera&
   glDisable(GL_DEPTH_TEST);
 }
 
-// The back buffer as the user sees it, written with the examples' PNG writer.
+// The back buffer as the user sees it, written with the command-line programs' PNG writer
+// (highlight_picture.h).
 bool write_screenshot(const std::string& path, int width, int height)
 {
   std::vector<unsigned char> rgb(std::size_t(width) * std::size_t(height) * 3);

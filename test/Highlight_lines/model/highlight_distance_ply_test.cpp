@@ -1,5 +1,5 @@
-// The highlight distance as a PLY vertex property (issue 18), as the example programs write it
-// (examples/Highlight_lines/include/mesh_io.h, highlight_lines --mesh-out FILE.ply): written,
+// The highlight distance as a PLY vertex property (issue 18), as the command-line programs write it
+// (demo/Highlight_lines/include/mesh_io.h, highlight_lines --mesh-out FILE.ply): written,
 // read back with CGAL's PLY reader, the values are the library's, they are eq. 1 evaluated
 // independently, and their linear interpolation along each edge equals m·s at the model's
 // nodes, so that a viewer's contour filter at m·s draws the highlight lines.

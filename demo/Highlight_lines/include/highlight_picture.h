@@ -1,12 +1,12 @@
 // Copyright (c) 2024 The Highlight_lines package authors.
 //
-// highlight_picture.h: a small software renderer and PNG writer for the example programs.
+// highlight_picture.h: a small software renderer and PNG writer for the command-line programs.
 //
 // Renders triangle meshes (z-buffered, Lambert + ambient + Blinn specular, smooth or flat,
 // two-sided), 3D polylines and point markers drawn over them with a depth test, captions in a
 // built-in bitmap font, and side-by-side compositions, then writes the result as PNG, compressed
 // with zlib (Debian zlib1g-dev). Nothing else but the C++ standard library is used, so the
-// examples need no image library and no display. Anti-aliasing is done by supersampling the
+// programs need no image library and no display. Anti-aliasing is done by supersampling the
 // whole picture.
 
 #ifndef HIGHLIGHT_PICTURE_H

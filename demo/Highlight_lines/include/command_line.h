@@ -1,6 +1,6 @@
-// Small helpers for the example programs' command lines.
-#ifndef HIGHLIGHT_LINES_EXAMPLES_COMMAND_LINE_H
-#define HIGHLIGHT_LINES_EXAMPLES_COMMAND_LINE_H
+// Small helpers for the command lines of the command-line programs (demo/Highlight_lines).
+#ifndef HIGHLIGHT_LINES_DEMO_COMMAND_LINE_H
+#define HIGHLIGHT_LINES_DEMO_COMMAND_LINE_H
 
 #include <cstdlib>
 #include <iostream>

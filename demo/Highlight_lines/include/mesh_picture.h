@@ -1,7 +1,7 @@
 // Conversions from a CGAL Surface_mesh and CGAL polylines to the arrays the picture writer
-// (highlight_picture.h, which knows nothing of CGAL) draws. Shared by the example programs.
-#ifndef HIGHLIGHT_LINES_EXAMPLES_MESH_PICTURE_H
-#define HIGHLIGHT_LINES_EXAMPLES_MESH_PICTURE_H
+// (highlight_picture.h, which knows nothing of CGAL) draws. Shared by the command-line programs.
+#ifndef HIGHLIGHT_LINES_DEMO_MESH_PICTURE_H
+#define HIGHLIGHT_LINES_DEMO_MESH_PICTURE_H
 
 #include <CGAL/Surface_mesh.h>
 
@@ -53,4 +53,4 @@ polyline_arrays(const std::vector<std::vector<Point>>& polylines)
 
 } // namespace mesh_picture
 
-#endif // HIGHLIGHT_LINES_EXAMPLES_MESH_PICTURE_H
+#endif // HIGHLIGHT_LINES_DEMO_MESH_PICTURE_H

@@ -1,8 +1,8 @@
 // A picture of a whole Surface_mesh seen from the light plane's side, some face regions tinted
 // (red: the first, orange: the others) and the highlight lines of a light setup drawn on top.
-// Shared by the example programs that show detected irregularities.
-#ifndef HIGHLIGHT_LINES_EXAMPLES_REGION_OVERVIEW_H
-#define HIGHLIGHT_LINES_EXAMPLES_REGION_OVERVIEW_H
+// Shared by the command-line programs that show detected irregularities.
+#ifndef HIGHLIGHT_LINES_DEMO_REGION_OVERVIEW_H
+#define HIGHLIGHT_LINES_DEMO_REGION_OVERVIEW_H
 
 #include <CGAL/Highlight_lines/Light_setup.h>
 #include <CGAL/Highlight_lines/default_light_setup.h>
@@ -52,4 +52,4 @@ picture(const CGAL::Surface_mesh<Point>& mesh,
 
 } // namespace region_overview
 
-#endif // HIGHLIGHT_LINES_EXAMPLES_REGION_OVERVIEW_H
+#endif // HIGHLIGHT_LINES_DEMO_REGION_OVERVIEW_H

@@ -1,7 +1,7 @@
-// Mesh and region files for the example programs: every mesh format CGAL reads, written back in
-// the format it came in, and regions as face-id lists or CGAL Lab selection files.
-#ifndef HIGHLIGHT_LINES_EXAMPLES_MESH_IO_H
-#define HIGHLIGHT_LINES_EXAMPLES_MESH_IO_H
+// Mesh and region files for the command-line programs: every mesh format CGAL reads, written
+// back in the format it came in, and regions as face-id lists or CGAL Lab selection files.
+#ifndef HIGHLIGHT_LINES_DEMO_MESH_IO_H
+#define HIGHLIGHT_LINES_DEMO_MESH_IO_H
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/IO/polygon_soup_io.h>

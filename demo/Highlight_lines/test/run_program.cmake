@@ -1,9 +1,9 @@
-# Runs an example program for a test and checks what it did: fails if the program fails, if its
-# output does not match EXPECT (a regular expression, optional), or if a file of FILES (a
+# Runs a command-line program for a test and checks what it did: fails if the program fails, if
+# its output does not match EXPECT (a regular expression, optional), or if a file of FILES (a
 # ;-separated list, optional) was not written.
 #
 #   cmake -DPROGRAM=<program> "-DARGS=<arg;arg;...>" [-DEXPECT=<regex>] [-DFILES=<file;...>]
-#         -P run_example.cmake
+#         -P run_program.cmake
 foreach(file IN LISTS FILES)
   file(REMOVE "${file}")
 endforeach()
