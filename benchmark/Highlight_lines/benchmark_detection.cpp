@@ -418,6 +418,31 @@ void local_table(const std::string& name, unsigned seeds)
   }
 }
 
+// Where a region lies against a defect, in mean edge lengths: the distance from the defect's
+// centre to the region's peak vertex and to the mean of its vertices, and the farthest vertex.
+std::string region_geometry(const HB::Mesh& mesh, const HB::Irregularity& region,
+                            const HB::Injected_defect& defect)
+{
+  const double e = test::mean_edge_length(mesh);
+  std::set<HB::Mesh::Vertex_index> vertices;
+  for (auto f : region.faces)
+    for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      vertices.insert(v);
+  HB::Vector mean(0, 0, 0);
+  double farthest = 0;
+  for (auto v : vertices) {
+    mean = mean + (mesh.point(v) - CGAL::ORIGIN) / double(vertices.size());
+    farthest =
+        (std::max)(farthest, std::sqrt(CGAL::squared_distance(mesh.point(v), defect.centre)));
+  }
+  std::ostringstream out;
+  out << std::setprecision(3) << " (peak "
+      << std::sqrt(CGAL::squared_distance(mesh.point(region.peak_vertex), defect.centre)) / e
+      << " ē, mean " << std::sqrt(CGAL::squared_distance(CGAL::ORIGIN + mean, defect.centre)) / e
+      << " ē, farthest " << farthest / e << " ē from the defect)";
+  return out.str();
+}
+
 // Why defects are missed (--misses): per defect that no region locates, what lies around it,
 // from the detection's output only. A defect is
 //   mis-centred  if a region holds its centre vertex but reaches farther than 3R from it;
@@ -494,7 +519,8 @@ void misses_table(const std::string& name, unsigned seeds)
                 << after;
         if (holds[d] != std::size_t(-1))
           details << "; held by region " << holds[d] + 1 << " of " << found.size() << " ["
-                  << HB::describe(found[holds[d]]) << "]";
+                  << HB::describe(found[holds[d]]) << "]"
+                  << region_geometry(mesh, found[holds[d]], defect);
         if (design_region != std::size_t(-1))
           details << "; undented region " << design_region + 1 << " within 2R ["
                   << HB::describe(own[design_region]) << "]";
