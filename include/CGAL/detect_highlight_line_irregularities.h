@@ -9,9 +9,9 @@
 #include <CGAL/Highlight_lines/Invalid_input.h>
 #include <CGAL/Highlight_lines/Light_setup.h>
 #include <CGAL/Highlight_lines/parameters.h>
-#include <CGAL/Highlight_lines/internal/anomaly_regions.h>
-#include <CGAL/Highlight_lines/internal/line_bending.h>
-#include <CGAL/Highlight_lines/internal/mirror_symmetry.h>
+#include <CGAL/Highlight_lines/internal/detection/anomaly_regions.h>
+#include <CGAL/Highlight_lines/internal/detection/line_bending.h>
+#include <CGAL/Highlight_lines/internal/detection/mirror_symmetry.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>

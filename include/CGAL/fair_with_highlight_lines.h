@@ -10,8 +10,8 @@
 #include <CGAL/Highlight_lines/Invalid_input.h>
 #include <CGAL/Highlight_lines/Light_setup.h>
 #include <CGAL/Highlight_lines/parameters.h>
-#include <CGAL/Highlight_lines/internal/face_region.h>
-#include <CGAL/Highlight_lines/internal/fairing.h>
+#include <CGAL/Highlight_lines/internal/fairing/face_region.h>
+#include <CGAL/Highlight_lines/internal/fairing/fairing.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/helpers.h>

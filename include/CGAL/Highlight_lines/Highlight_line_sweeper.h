@@ -9,12 +9,12 @@
 #include <CGAL/Highlight_lines/Light_setup.h>
 #include <CGAL/Highlight_lines/parameters.h>
 #include <CGAL/Highlight_lines/internal/Local_mesh.h>
-#include <CGAL/Highlight_lines/internal/highlight_nodes.h>
-#include <CGAL/Highlight_lines/internal/level_classification.h>
-#include <CGAL/Highlight_lines/internal/line_tracing.h>
-#include <CGAL/Highlight_lines/internal/node_connection.h>
+#include <CGAL/Highlight_lines/internal/model/highlight_nodes.h>
+#include <CGAL/Highlight_lines/internal/model/level_classification.h>
+#include <CGAL/Highlight_lines/internal/model/line_tracing.h>
+#include <CGAL/Highlight_lines/internal/model/node_connection.h>
 #include <CGAL/Highlight_lines/internal/parallel.h>
-#include <CGAL/Highlight_lines/internal/vertex_normals.h>
+#include <CGAL/Highlight_lines/internal/model/vertex_normals.h>
 
 #include <CGAL/Default.h>
 #include <CGAL/Kernel_traits.h>

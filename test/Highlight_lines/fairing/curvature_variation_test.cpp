@@ -1,10 +1,10 @@
-// The curvature variation energy's mean curvature (internal/curvature_variation_energy.h,
-// internal/mean_curvature_fit.h): exact for quadratic height functions on jittered
+// The curvature variation energy's mean curvature (internal/fairing/curvature_variation_energy.h,
+// internal/fairing/mean_curvature_fit.h): exact for quadratic height functions on jittered
 // triangulations, an exact quadratic in the normal displacements, an energy that does not
 // grow when an irregular triangulation is refined, and no continuation of a crease into R.
 #include "test_meshes.h"
 
-#include <CGAL/Highlight_lines/internal/curvature_variation_energy.h>
+#include <CGAL/Highlight_lines/internal/fairing/curvature_variation_energy.h>
 
 #include <gtest/gtest.h>
 

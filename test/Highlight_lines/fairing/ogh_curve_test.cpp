@@ -1,6 +1,6 @@
 // §3.2, desired highlight lines: the OGH curve, its arc-length parameterisation and the
 // two-segment fallback.
-#include <CGAL/Highlight_lines/internal/ogh_curve.h>
+#include <CGAL/Highlight_lines/internal/fairing/ogh_curve.h>
 
 #include <gtest/gtest.h>
 

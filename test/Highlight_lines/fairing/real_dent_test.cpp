@@ -268,9 +268,9 @@ struct Pattern_recording_solver : test::Forwarding_solver
 };
 
 // The first program of a fairing declares every entry that any of its programs sets, so that
-// one symbolic analysis of the solver serves them all (internal/program_pattern.h): nodes move
-// onto other edges and clamped cotangent weights cross zero from one iteration to the next, and
-// the sliver and folded triangles of a scan-like triangulation do that most. Every energy.
+// one symbolic analysis of the solver serves them all (internal/fairing/program_pattern.h): nodes
+// move onto other edges and clamped cotangent weights cross zero from one iteration to the next,
+// and the sliver and folded triangles of a scan-like triangulation do that most. Every energy.
 TEST_P(RealDentTest, TheFirstProgramDeclaresEveryEntryOfTheLaterOnes)
 {
   const std::vector<HB::Real_dent_case> cases = scan_like_dent_cases(mesh, stem);

@@ -6,7 +6,7 @@
 #include "test_meshes.h"
 
 #include <CGAL/Highlight_lines/fairing_building_blocks.h>
-#include <CGAL/Highlight_lines/internal/flip_guard.h>
+#include <CGAL/Highlight_lines/internal/fairing/flip_guard.h>
 #include <CGAL/fair_with_highlight_lines.h>
 
 #include <gtest/gtest.h>

@@ -1,8 +1,8 @@
 // §3.4, fairness function: the discrete Willmore energy and its exact quadratic form in the
 // normal displacements of the movable vertices; and the curvature variation energy (beyond the
 // paper), likewise.
-#include <CGAL/Highlight_lines/internal/curvature_variation_energy.h>
-#include <CGAL/Highlight_lines/internal/willmore_energy.h>
+#include <CGAL/Highlight_lines/internal/fairing/curvature_variation_energy.h>
+#include <CGAL/Highlight_lines/internal/fairing/willmore_energy.h>
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>

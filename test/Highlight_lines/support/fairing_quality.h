@@ -42,7 +42,7 @@
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Kernel/global_functions_3.h>
 #include <CGAL/Highlight_lines/fairing_building_blocks.h>
-#include <CGAL/Highlight_lines/internal/willmore_energy.h>
+#include <CGAL/Highlight_lines/internal/fairing/willmore_energy.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/compute_highlight_lines.h>

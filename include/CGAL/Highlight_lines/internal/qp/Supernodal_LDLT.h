@@ -5,7 +5,7 @@
 #define CGAL_HIGHLIGHT_LINES_INTERNAL_QP_SUPERNODAL_LDLT_H
 
 #include <CGAL/Highlight_lines/internal/qp/bucket_sort.h>
-#include <CGAL/Highlight_lines/internal/uninitialized_array.h>
+#include <CGAL/Highlight_lines/internal/qp/uninitialized_array.h>
 
 #include <Eigen/Dense>
 

@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The Highlight_lines package authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_WILLMORE_ENERGY_H
-#define CGAL_HIGHLIGHT_LINES_INTERNAL_WILLMORE_ENERGY_H
+#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_WILLMORE_ENERGY_H
+#define CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_WILLMORE_ENERGY_H
 
 // §3.4 of the paper, "Fairness function": the discrete Willmore energy (eq. 6-9)
 //   E = Σ_{i in I_R} A_i ‖K_i‖²,   K_i = 1/(2 A_i) Σ_j (cot α_ij + cot β_ij)(V_i - V_j),
@@ -309,4 +309,4 @@ inline Willmore_quadratic make_willmore_quadratic(
 } // namespace Highlight_lines
 } // namespace CGAL
 
-#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_WILLMORE_ENERGY_H
+#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_WILLMORE_ENERGY_H

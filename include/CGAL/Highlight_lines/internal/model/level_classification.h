@@ -1,13 +1,13 @@
 // Copyright (c) 2026 The Highlight_lines package authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_LEVEL_CLASSIFICATION_H
-#define CGAL_HIGHLIGHT_LINES_INTERNAL_LEVEL_CLASSIFICATION_H
+#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_MODEL_LEVEL_CLASSIFICATION_H
+#define CGAL_HIGHLIGHT_LINES_INTERNAL_MODEL_LEVEL_CLASSIFICATION_H
 
 #include <CGAL/Highlight_lines/Light_setup.h>
 #include <CGAL/Highlight_lines/internal/Local_mesh.h>
 #include <CGAL/Highlight_lines/internal/parallel.h>
-#include <CGAL/Highlight_lines/internal/vertex_normals.h>
+#include <CGAL/Highlight_lines/internal/model/vertex_normals.h>
 
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Number_types/internal/Exact_type_selector.h>
@@ -664,4 +664,4 @@ void classify_vertices(const Level_classifier<TriangleMesh>& classifier, std::si
 } // namespace Highlight_lines
 } // namespace CGAL
 
-#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_LEVEL_CLASSIFICATION_H
+#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_MODEL_LEVEL_CLASSIFICATION_H

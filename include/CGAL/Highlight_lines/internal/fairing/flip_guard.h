@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The Highlight_lines package authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_FLIP_GUARD_H
-#define CGAL_HIGHLIGHT_LINES_INTERNAL_FLIP_GUARD_H
+#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_FLIP_GUARD_H
+#define CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_FLIP_GUARD_H
 
 // The no-flip rule of the fairing's steps (the purpose of eq. 16's bound, enforced directly).
 //
@@ -13,7 +13,7 @@
 // vertex normals, as slivers of a noisy scan can be) has no trustworthy orientation: it may
 // turn freely, and must only stay non-degenerate.
 
-#include <CGAL/Highlight_lines/internal/node_jacobian.h>
+#include <CGAL/Highlight_lines/internal/fairing/node_jacobian.h>
 
 #include <array>
 #include <cstddef>
@@ -72,4 +72,4 @@ private:
 } // namespace Highlight_lines
 } // namespace CGAL
 
-#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_FLIP_GUARD_H
+#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_FLIP_GUARD_H

@@ -1,10 +1,10 @@
 // Copyright (c) 2026 The Highlight_lines package authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_LINE_TRACING_H
-#define CGAL_HIGHLIGHT_LINES_INTERNAL_LINE_TRACING_H
+#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_MODEL_LINE_TRACING_H
+#define CGAL_HIGHLIGHT_LINES_INTERNAL_MODEL_LINE_TRACING_H
 
-#include <CGAL/Highlight_lines/internal/highlight_nodes.h>
+#include <CGAL/Highlight_lines/internal/model/highlight_nodes.h>
 
 #include <algorithm>
 #include <array>
@@ -172,4 +172,4 @@ inline void trace_lines(const std::vector<Raw_node>& nodes,
 } // namespace Highlight_lines
 } // namespace CGAL
 
-#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_LINE_TRACING_H
+#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_MODEL_LINE_TRACING_H

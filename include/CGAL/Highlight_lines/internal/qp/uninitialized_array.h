@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The Highlight_lines package authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_UNINITIALIZED_ARRAY_H
-#define CGAL_HIGHLIGHT_LINES_INTERNAL_UNINITIALIZED_ARRAY_H
+#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_QP_UNINITIALIZED_ARRAY_H
+#define CGAL_HIGHLIGHT_LINES_INTERNAL_QP_UNINITIALIZED_ARRAY_H
 
 #include <algorithm>
 #include <cstddef>
@@ -91,4 +91,4 @@ private:
 } // namespace Highlight_lines
 } // namespace CGAL
 
-#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_UNINITIALIZED_ARRAY_H
+#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_QP_UNINITIALIZED_ARRAY_H

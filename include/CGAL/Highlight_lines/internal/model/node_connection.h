@@ -1,12 +1,12 @@
 // Copyright (c) 2026 The Highlight_lines package authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_NODE_CONNECTION_H
-#define CGAL_HIGHLIGHT_LINES_INTERNAL_NODE_CONNECTION_H
+#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_MODEL_NODE_CONNECTION_H
+#define CGAL_HIGHLIGHT_LINES_INTERNAL_MODEL_NODE_CONNECTION_H
 
 #include <CGAL/Highlight_lines/internal/Local_mesh.h>
-#include <CGAL/Highlight_lines/internal/highlight_nodes.h>
-#include <CGAL/Highlight_lines/internal/level_classification.h>
+#include <CGAL/Highlight_lines/internal/model/highlight_nodes.h>
+#include <CGAL/Highlight_lines/internal/model/level_classification.h>
 #include <CGAL/Highlight_lines/internal/parallel.h>
 
 #include <CGAL/assertions.h>
@@ -243,4 +243,4 @@ void place_and_connect_nodes(const Local_mesh<TriangleMesh>& lm, const std::vect
 } // namespace Highlight_lines
 } // namespace CGAL
 
-#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_NODE_CONNECTION_H
+#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_MODEL_NODE_CONNECTION_H

@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The Highlight_lines package authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_FACE_REGION_H
-#define CGAL_HIGHLIGHT_LINES_INTERNAL_FACE_REGION_H
+#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_FACE_REGION_H
+#define CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_FACE_REGION_H
 
 #include <CGAL/Highlight_lines/Invalid_input.h>
 
@@ -162,4 +162,4 @@ neighborhood(const TriangleMesh& tm, const Face_region<TriangleMesh, FaceIndexMa
 } // namespace Highlight_lines
 } // namespace CGAL
 
-#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_FACE_REGION_H
+#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_FACE_REGION_H

@@ -1,13 +1,13 @@
 // Copyright (c) 2026 The Highlight_lines package authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_NODE_JACOBIAN_H
-#define CGAL_HIGHLIGHT_LINES_INTERNAL_NODE_JACOBIAN_H
+#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_NODE_JACOBIAN_H
+#define CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_NODE_JACOBIAN_H
 
 #include <CGAL/Highlight_lines/internal/Local_mesh.h>
-#include <CGAL/Highlight_lines/internal/fairing_region.h>
-#include <CGAL/Highlight_lines/internal/highlight_nodes.h>
-#include <CGAL/Highlight_lines/internal/vertex_normals.h>
+#include <CGAL/Highlight_lines/internal/fairing/fairing_region.h>
+#include <CGAL/Highlight_lines/internal/model/highlight_nodes.h>
+#include <CGAL/Highlight_lines/internal/model/vertex_normals.h>
 
 #include <algorithm>
 #include <array>
@@ -22,7 +22,7 @@ namespace internal {
 
 // Derivatives of node positions with respect to the normal displacements x_k of the movable
 // vertices (V_k -> V_k + x_k N_k), for the Gauss–Newton form of q_diff,
-// sum_i l_i |Q_i + J_i x - Q~_i|^2, which is convex (see internal/difference_energy.h).
+// sum_i l_i |Q_i + J_i x - Q~_i|^2, which is convex (see internal/fairing/difference_energy.h).
 //
 // A node on edge (V1, V2) at level m sits at Q = V1 + t (V2 - V1), t = (m s - d1)/(d2 - d1)
 // (eq. 13). d of a vertex (eq. 1) depends on its position and, through Ñ (eq. 3), on its
@@ -180,4 +180,4 @@ private:
 } // namespace Highlight_lines
 } // namespace CGAL
 
-#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_NODE_JACOBIAN_H
+#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_NODE_JACOBIAN_H

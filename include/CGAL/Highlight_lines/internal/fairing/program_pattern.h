@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The Highlight_lines package authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_PROGRAM_PATTERN_H
-#define CGAL_HIGHLIGHT_LINES_INTERNAL_PROGRAM_PATTERN_H
+#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_PROGRAM_PATTERN_H
+#define CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_PROGRAM_PATTERN_H
 
 // Which entries of a fairing program's matrix can ever be nonzero: the pairs of variables at
 // most three edges apart. Every term couples only such pairs: a node on the edge (a, b) moves
@@ -19,7 +19,7 @@
 // factorisation. Handing it this pattern once, as explicit zeros, makes one analysis serve the
 // whole fairing.
 
-#include <CGAL/Highlight_lines/internal/fairing_region.h>
+#include <CGAL/Highlight_lines/internal/fairing/fairing_region.h>
 
 #include <cstddef>
 #include <utility>
@@ -71,4 +71,4 @@ variable_pairs_within_three_edges(const Fairing_region& region)
 } // namespace Highlight_lines
 } // namespace CGAL
 
-#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_PROGRAM_PATTERN_H
+#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_PROGRAM_PATTERN_H

@@ -1,13 +1,13 @@
 // Copyright (c) 2026 The Highlight_lines package authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_HIGHLIGHT_NODES_H
-#define CGAL_HIGHLIGHT_LINES_INTERNAL_HIGHLIGHT_NODES_H
+#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_MODEL_HIGHLIGHT_NODES_H
+#define CGAL_HIGHLIGHT_LINES_INTERNAL_MODEL_HIGHLIGHT_NODES_H
 
 #include <CGAL/Highlight_lines/internal/Local_mesh.h>
-#include <CGAL/Highlight_lines/internal/level_classification.h>
+#include <CGAL/Highlight_lines/internal/model/level_classification.h>
 #include <CGAL/Highlight_lines/internal/parallel.h>
-#include <CGAL/Highlight_lines/internal/vertex_normals.h>
+#include <CGAL/Highlight_lines/internal/model/vertex_normals.h>
 
 #include <boost/config.hpp>
 
@@ -513,4 +513,4 @@ void compute_highlight_nodes(const Local_mesh<TriangleMesh>& lm, const std::vect
 } // namespace Highlight_lines
 } // namespace CGAL
 
-#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_HIGHLIGHT_NODES_H
+#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_MODEL_HIGHLIGHT_NODES_H

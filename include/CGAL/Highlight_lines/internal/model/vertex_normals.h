@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The Highlight_lines package authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_VERTEX_NORMALS_H
-#define CGAL_HIGHLIGHT_LINES_INTERNAL_VERTEX_NORMALS_H
+#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_MODEL_VERTEX_NORMALS_H
+#define CGAL_HIGHLIGHT_LINES_INTERNAL_MODEL_VERTEX_NORMALS_H
 
 #include <CGAL/Highlight_lines/Invalid_input.h>
 #include <CGAL/Highlight_lines/internal/Local_mesh.h>
@@ -215,4 +215,4 @@ void compute_vertex_normals(const Local_mesh<TriangleMesh>& lm, Vertex_normals& 
 } // namespace Highlight_lines
 } // namespace CGAL
 
-#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_VERTEX_NORMALS_H
+#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_MODEL_VERTEX_NORMALS_H

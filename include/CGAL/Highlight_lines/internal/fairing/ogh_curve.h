@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The Highlight_lines package authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_OGH_CURVE_H
-#define CGAL_HIGHLIGHT_LINES_INTERNAL_OGH_CURVE_H
+#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_OGH_CURVE_H
+#define CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_OGH_CURVE_H
 
 // §3.2 of the paper, "Desired highlight lines": the optimized geometric Hermite (OGH) curve
 // of Yong & Cheng that replaces the part of a highlight line inside the fairing region, its
@@ -330,4 +330,4 @@ inline Ogh_target make_ogh_target(const ogh_detail::Vec3& q0, const ogh_detail::
 } // namespace Highlight_lines
 } // namespace CGAL
 
-#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_OGH_CURVE_H
+#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_OGH_CURVE_H

@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The Highlight_lines package authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_LINE_BENDING_H
-#define CGAL_HIGHLIGHT_LINES_INTERNAL_LINE_BENDING_H
+#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_DETECTION_LINE_BENDING_H
+#define CGAL_HIGHLIGHT_LINES_INTERNAL_DETECTION_LINE_BENDING_H
 
 #include <CGAL/Highlight_lines/internal/vector3.h>
 
@@ -364,4 +364,4 @@ inline Robust_statistics robust_statistics_signed(const std::vector<double>& val
 } // namespace Highlight_lines
 } // namespace CGAL
 
-#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_LINE_BENDING_H
+#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_DETECTION_LINE_BENDING_H

@@ -1,23 +1,23 @@
 // Copyright (c) 2026 The Highlight_lines package authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_H
-#define CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_H
+#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_FAIRING_H
+#define CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_FAIRING_H
 
 #include <CGAL/Highlight_lines/Fairing_report.h>
 #include <CGAL/Highlight_lines/Fairness_energy.h>
 #include <CGAL/Highlight_lines/Highlight_line_sweeper.h>
 #include <CGAL/Highlight_lines/Invalid_input.h>
 #include <CGAL/Highlight_lines/Light_setup.h>
-#include <CGAL/Highlight_lines/internal/curvature_variation_energy.h>
-#include <CGAL/Highlight_lines/internal/desired_highlight_lines.h>
-#include <CGAL/Highlight_lines/internal/difference_energy.h>
-#include <CGAL/Highlight_lines/internal/flip_guard.h>
-#include <CGAL/Highlight_lines/internal/fairing_region.h>
-#include <CGAL/Highlight_lines/internal/node_jacobian.h>
-#include <CGAL/Highlight_lines/internal/ogh_curve.h>
-#include <CGAL/Highlight_lines/internal/program_pattern.h>
-#include <CGAL/Highlight_lines/internal/willmore_energy.h>
+#include <CGAL/Highlight_lines/internal/fairing/curvature_variation_energy.h>
+#include <CGAL/Highlight_lines/internal/fairing/desired_highlight_lines.h>
+#include <CGAL/Highlight_lines/internal/fairing/difference_energy.h>
+#include <CGAL/Highlight_lines/internal/fairing/flip_guard.h>
+#include <CGAL/Highlight_lines/internal/fairing/fairing_region.h>
+#include <CGAL/Highlight_lines/internal/fairing/node_jacobian.h>
+#include <CGAL/Highlight_lines/internal/fairing/ogh_curve.h>
+#include <CGAL/Highlight_lines/internal/fairing/program_pattern.h>
+#include <CGAL/Highlight_lines/internal/fairing/willmore_energy.h>
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -934,4 +934,4 @@ private:
 } // namespace Highlight_lines
 } // namespace CGAL
 
-#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_H
+#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_FAIRING_H

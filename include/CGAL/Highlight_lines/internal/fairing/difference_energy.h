@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The Highlight_lines package authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_DIFFERENCE_ENERGY_H
-#define CGAL_HIGHLIGHT_LINES_INTERNAL_DIFFERENCE_ENERGY_H
+#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_DIFFERENCE_ENERGY_H
+#define CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_DIFFERENCE_ENERGY_H
 
 // §3.5 of the paper, "Difference function": how far the highlight lines inside the region lie
 // from their desired curves (eq. 10-14),
@@ -17,10 +17,10 @@
 // again in every new model ("matched"): their delimiting nodes lie outside the region and never
 // move.
 
-#include <CGAL/Highlight_lines/internal/desired_highlight_lines.h>
-#include <CGAL/Highlight_lines/internal/fairing_region.h>
-#include <CGAL/Highlight_lines/internal/node_jacobian.h>
-#include <CGAL/Highlight_lines/internal/ogh_curve.h>
+#include <CGAL/Highlight_lines/internal/fairing/desired_highlight_lines.h>
+#include <CGAL/Highlight_lines/internal/fairing/fairing_region.h>
+#include <CGAL/Highlight_lines/internal/fairing/node_jacobian.h>
+#include <CGAL/Highlight_lines/internal/fairing/ogh_curve.h>
 
 #include <cmath>
 #include <cstddef>
@@ -195,4 +195,4 @@ double add_difference_quadratic(const Model& model, const std::vector<Matched_pi
 } // namespace Highlight_lines
 } // namespace CGAL
 
-#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_DIFFERENCE_ENERGY_H
+#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_DIFFERENCE_ENERGY_H

@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The Highlight_lines package authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_REGION_H
-#define CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_REGION_H
+#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_FAIRING_REGION_H
+#define CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_FAIRING_REGION_H
 
 #include <CGAL/Highlight_lines/internal/Local_mesh.h>
 
@@ -132,4 +132,4 @@ void build_fairing_region(const TriangleMesh& tm, const Local_mesh<TriangleMesh>
 } // namespace Highlight_lines
 } // namespace CGAL
 
-#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_REGION_H
+#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_FAIRING_REGION_H

@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The Highlight_lines package authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_ANOMALY_REGIONS_H
-#define CGAL_HIGHLIGHT_LINES_INTERNAL_ANOMALY_REGIONS_H
+#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_DETECTION_ANOMALY_REGIONS_H
+#define CGAL_HIGHLIGHT_LINES_INTERNAL_DETECTION_ANOMALY_REGIONS_H
 
 #include <algorithm>
 #include <array>
@@ -438,4 +438,4 @@ inline std::array<double, 2> largest_spreads(const double (&c)[3][3])
 } // namespace Highlight_lines
 } // namespace CGAL
 
-#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_ANOMALY_REGIONS_H
+#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_DETECTION_ANOMALY_REGIONS_H

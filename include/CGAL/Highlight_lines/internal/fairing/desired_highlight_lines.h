@@ -1,13 +1,13 @@
 // Copyright (c) 2026 The Highlight_lines package authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_DESIRED_HIGHLIGHT_LINES_H
-#define CGAL_HIGHLIGHT_LINES_INTERNAL_DESIRED_HIGHLIGHT_LINES_H
+#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_DESIRED_HIGHLIGHT_LINES_H
+#define CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_DESIRED_HIGHLIGHT_LINES_H
 
-#include <CGAL/Highlight_lines/internal/fairing_region.h>
-#include <CGAL/Highlight_lines/internal/highlight_nodes.h>
-#include <CGAL/Highlight_lines/internal/line_tracing.h>
-#include <CGAL/Highlight_lines/internal/node_jacobian.h>
+#include <CGAL/Highlight_lines/internal/fairing/fairing_region.h>
+#include <CGAL/Highlight_lines/internal/model/highlight_nodes.h>
+#include <CGAL/Highlight_lines/internal/model/line_tracing.h>
+#include <CGAL/Highlight_lines/internal/fairing/node_jacobian.h>
 
 #include <array>
 #include <cmath>
@@ -170,4 +170,4 @@ inline Vec3 fitted_end_tangent(const Vec3& p, const std::vector<Vec3>& previous,
 } // namespace Highlight_lines
 } // namespace CGAL
 
-#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_DESIRED_HIGHLIGHT_LINES_H
+#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_DESIRED_HIGHLIGHT_LINES_H

@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The Highlight_lines package authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_MEAN_CURVATURE_FIT_H
-#define CGAL_HIGHLIGHT_LINES_INTERNAL_MEAN_CURVATURE_FIT_H
+#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_MEAN_CURVATURE_FIT_H
+#define CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_MEAN_CURVATURE_FIT_H
 
 // A pointwise mean curvature that is consistent on irregular triangulations and linear in the
 // positions: at a vertex P with unit normal N and a tangent frame (T1, T2), the heights
@@ -216,4 +216,4 @@ inline std::array<double, 3> plane_normal(int center, const std::vector<int>& po
 } // namespace Highlight_lines
 } // namespace CGAL
 
-#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_MEAN_CURVATURE_FIT_H
+#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_MEAN_CURVATURE_FIT_H

@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The Highlight_lines package authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_CURVATURE_VARIATION_ENERGY_H
-#define CGAL_HIGHLIGHT_LINES_INTERNAL_CURVATURE_VARIATION_ENERGY_H
+#ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_CURVATURE_VARIATION_ENERGY_H
+#define CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_CURVATURE_VARIATION_ENERGY_H
 
 // A third-order fairness energy (beyond the paper): the variation of the mean curvature,
 //   E = ℓ² Σ_{edges ij} c_ij (H_i - H_j)² + μ Σ_{i in R} A_i H_i²,   H_i = K_i · N_i,
@@ -47,8 +47,8 @@
 // affine in x: E(x) = ½ xᵀ Q x + cᵀ x + r exactly, handed to a sink as add_willmore_quadratic()
 // does.
 
-#include <CGAL/Highlight_lines/internal/mean_curvature_fit.h>
-#include <CGAL/Highlight_lines/internal/willmore_energy.h>
+#include <CGAL/Highlight_lines/internal/fairing/mean_curvature_fit.h>
+#include <CGAL/Highlight_lines/internal/fairing/willmore_energy.h>
 
 #include <algorithm>
 #include <array>
@@ -630,4 +630,4 @@ double add_curvature_variation_quadratic(const Frozen_curvature_variation& froze
 } // namespace Highlight_lines
 } // namespace CGAL
 
-#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_CURVATURE_VARIATION_ENERGY_H
+#endif // CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_CURVATURE_VARIATION_ENERGY_H
