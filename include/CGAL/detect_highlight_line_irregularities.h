@@ -10,8 +10,12 @@
 #include <CGAL/Highlight_lines/Light_setup.h>
 #include <CGAL/Highlight_lines/parameters.h>
 #include <CGAL/Highlight_lines/internal/detection/anomaly_regions.h>
+#include <CGAL/Highlight_lines/internal/detection/highlight_distance_field.h>
+#include <CGAL/Highlight_lines/internal/detection/light_planes.h>
 #include <CGAL/Highlight_lines/internal/detection/line_bending.h>
+#include <CGAL/Highlight_lines/internal/detection/line_peaks.h>
 #include <CGAL/Highlight_lines/internal/detection/mirror_symmetry.h>
+#include <CGAL/Highlight_lines/internal/detection/sharp_edge_vertices.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -552,15 +556,15 @@ OutputIterator detect_highlight_line_irregularities(
 
   // With the local residual, the mirror symmetry of the surface, if it has one (design is
   // symmetric, defects are not), and the asymmetry of each vertex, computed when needed.
+  std::vector<Vec3> points(static_cast<std::size_t>(nv));
+  for (int v = 0; v < nv; ++v) {
+    const double* p = local.point(v);
+    points[std::size_t(v)] = Vec3{p[0], p[1], p[2]};
+  }
   std::unique_ptr<HL::internal::Mirror_symmetry> mirror;
   std::vector<double> mirror_distance;
   if (options.local_residual) {
-    std::vector<Vec3> vertex_points(static_cast<std::size_t>(nv));
-    for (int v = 0; v < nv; ++v) {
-      const double* p = local.point(v);
-      vertex_points[std::size_t(v)] = Vec3{p[0], p[1], p[2]};
-    }
-    mirror = std::make_unique<HL::internal::Mirror_symmetry>(vertex_points, corners, mean_edge);
+    mirror = std::make_unique<HL::internal::Mirror_symmetry>(points, corners, mean_edge);
     mirror_distance.assign(static_cast<std::size_t>(nv), -1.0);
   }
 
@@ -599,59 +603,21 @@ OutputIterator detect_highlight_line_irregularities(
       const auto n = sweeper.vertex_normals().unit_normal(v);
       normals[std::size_t(v)] = Vec3{n[0], n[1], n[2]};
     }
-    // Sharp edges: the angle between the normals of their two faces exceeds
-    // `sharp_edge_angle` (the criterion of PMP::detect_sharp_edges()). The lines kink there by
-    // design: anomalies within one ring of a sharp edge's vertex are not counted, and no region
-    // grows across one.
-    std::vector<char> sharp(static_cast<std::size_t>(nv), 0);
-    {
-      const double cos_sharp = std::cos(options.sharp_edge_angle * pi / 180);
-      std::vector<std::array<int, 2>> edge_faces(local.edge_vertices.size(), {-1, -1});
-      for (std::size_t f = 0; f < nf; ++f)
-        for (int e : local.face_edges[f]) {
-          auto& ef = edge_faces[std::size_t(e)];
-          (ef[0] < 0 ? ef[0] : ef[1]) = int(f);
-        }
-      auto face_normal = [&](int f) {
-        const auto& c = corners[std::size_t(f)];
-        const double *p = local.point(c[0]), *q = local.point(c[1]), *r = local.point(c[2]);
-        const Vec3 n = cross(Vec3{q[0] - p[0], q[1] - p[1], q[2] - p[2]},
-                             Vec3{r[0] - p[0], r[1] - p[1], r[2] - p[2]});
-        const double length = norm(n);
-        return length > 0 ? (1 / length) * n : n;
-      };
-      for (std::size_t e = 0; e < edge_faces.size(); ++e)
-        if (edge_faces[e][1] >= 0 &&
-            dot(face_normal(edge_faces[e][0]), face_normal(edge_faces[e][1])) < cos_sharp)
-          for (int v : local.edge_vertices[e])
-            if (v < nv)
-              sharp[std::size_t(v)] = 1;
-    }
+    // The vertices of sharp edges: the lines kink there by design, so anomalies within one ring
+    // of them are not counted, and no region grows across one.
+    const std::vector<char> sharp =
+        HL::internal::sharp_edge_vertices(local, options.sharp_edge_angle);
     std::vector<char> near_sharp = sharp;
-    HL::internal::grow_by_rings(HL::internal::Vertex_adjacency(corners, nv), 1, near_sharp);
+    HL::internal::grow_by_rings(adjacency, 1, near_sharp);
     const double minimum_facing = std::cos(options.maximum_incidence_angle * pi / 180);
 
     // Only the peaks of the bending along a line count (one per stencil width w): the stencil
     // spreads a defect's response over 3w/2 to either side, the peak stays on the defect.
     const std::ptrdiff_t peak_window =
         options.local_residual ? std::ptrdiff_t(residual_scales.gap) : scales.fine_samples;
-    auto is_local_maximum = [peak_window](const std::vector<double>& bending, std::size_t i,
+    auto is_local_maximum = [peak_window](const std::vector<double>& values, std::size_t i,
                                           bool closed) {
-      const std::ptrdiff_t n = std::ptrdiff_t(bending.size());
-      for (std::ptrdiff_t d = -peak_window; d <= peak_window; ++d) {
-        std::ptrdiff_t j = std::ptrdiff_t(i) + d;
-        if (closed)
-          j = ((j % n) + n) % n;
-        if (d == 0 || j < 0 || j >= n)
-          continue;
-        // Values equal up to rounding (plateaus are common: the line is piecewise linear) tie,
-        // and ties go to the first sample, so a plateau yields one peak wherever rounding
-        // leaves its maximum.
-        const double other = bending[std::size_t(j)], tolerance = 1e-9 * bending[i];
-        if (other > bending[i] + tolerance || (other >= bending[i] - tolerance && d < 0))
-          return false;
-      }
-      return true;
+      return HL::internal::is_peak_along_line(values, i, closed, peak_window);
     };
 
     std::vector<HL::internal::Anomaly> anomalies;
@@ -673,46 +639,11 @@ OutputIterator detect_highlight_line_irregularities(
       float value;
     };
     std::vector<Sample> samples;
-    std::vector<double> distance_value(static_cast<std::size_t>(nv));
-    std::vector<Vec3> distance_gradient(static_cast<std::size_t>(nv));
-    std::vector<double> gradient_weight(static_cast<std::size_t>(nv));
+    HL::internal::Highlight_distance_field field; // with the local residual, per orientation
     // The light planes: `lights`, then (if all sides are looked at) the five other faces of a
-    // cube around the mesh in the lights' frame (Z, H, H x Z), as far from the mesh's centroid as
-    // `lights`: every unit normal lies within 54.7 degrees of one of their normals, so every face
-    // is scored by the setups of at least one plane. All have the spacing of `lights`.
-    const auto z0 = lights.plane_normal_array(), h0 = lights.light_direction_array();
-    const auto x0 = HL::internal::vector3::cross(h0, z0);
-    Vec3 centre{0, 0, 0};
-    double reach = 0;
-    for (int v = 0; v < nv; ++v) {
-      const double* p = local.point(v);
-      centre = centre + (1.0 / double(nv)) * Vec3{p[0], p[1], p[2]};
-    }
-    for (int v = 0; v < nv; ++v) {
-      const double* p = local.point(v);
-      reach = (std::max)(reach, norm(Vec3{p[0], p[1], p[2]} - centre));
-    }
-    const auto a0 = lights.base_point_array();
-    double distance = dot(Vec3{a0[0] - centre[0], a0[1] - centre[1], a0[2] - centre[2]},
-                          Vec3{z0[0], z0[1], z0[2]});
-    if (!(distance > reach))
-      distance = 2 * reach;
-    std::vector<HL::Light_setup<GeomTraits>> planes(1, lights);
-    if (options.all_sides)
-      for (int axis = 0; axis < 3; ++axis)
-        for (double sign : {1.0, -1.0}) {
-          if (axis == 0 && sign > 0)
-            continue; // `lights` itself
-          const auto& n = axis == 0 ? z0 : axis == 1 ? h0 : x0;
-          const auto& h = axis == 0 ? h0 : z0;
-          typedef typename GeomTraits::Point_3 Point_3;
-          typedef typename GeomTraits::Vector_3 Vector_3;
-          planes.emplace_back(Point_3(centre[0] + distance * sign * n[0],
-                                      centre[1] + distance * sign * n[1],
-                                      centre[2] + distance * sign * n[2]),
-                              Vector_3(h[0], h[1], h[2]),
-                              Vector_3(sign * n[0], sign * n[1], sign * n[2]), lights.spacing());
-        }
+    // cube around the mesh, so that every face is scored by the setups of at least one plane.
+    const std::vector<HL::Light_setup<GeomTraits>> planes =
+        HL::internal::light_planes_around(lights, points, options.all_sides);
     // How many setups score each vertex: those of the planes it faces within the incidence limit.
     std::vector<std::size_t> scoring_setups(static_cast<std::size_t>(nv), 0);
     for (const auto& plane : planes) {
@@ -731,84 +662,17 @@ OutputIterator detect_highlight_line_irregularities(
         planes.size() * std::size_t(options.orientations * options.offsets);
     (void)total_setups;
 
-    // The highlight distance d (eq. 4, without the division by the spacing) at each vertex
-    // facing the lights of `setup`, and its gradient over the surface (area-weighted mean of
-    // those of the faces whose corners all face them). The lines are its level sets m·s: they
-    // lie s/|grad d| apart on the surface, and a sideways shift r of a line is a change
-    // r·grad(d)/s of its level. Shifting the lights across changes d by a constant only.
-    auto compute_distance_gradient = [&](const HL::Light_setup<GeomTraits>& setup) {
-      const auto z = setup.plane_normal_array();
-      const auto a = setup.base_point_array(), hd = setup.light_direction_array();
-      for (int v = 0; v < nv; ++v) {
-        const Vec3& n = normals[std::size_t(v)];
-        const double facing = dot(n, Vec3{z[0], z[1], z[2]});
-        const double* p = local.point(v);
-        const Vec3 w{p[0] - a[0], p[1] - a[1], p[2] - a[2]};
-        distance_value[std::size_t(v)] = facing > 0.05
-                                             ? dot(cross(w, Vec3{hd[0], hd[1], hd[2]}), n) / facing
-                                             : std::numeric_limits<double>::quiet_NaN();
-        distance_gradient[std::size_t(v)] = Vec3{0, 0, 0};
-        gradient_weight[std::size_t(v)] = 0;
-      }
-      for (std::size_t f = 0; f < nf; ++f) {
-        const auto& c = corners[f];
-        const double d0 = distance_value[std::size_t(c[0])], d1 = distance_value[std::size_t(c[1])],
-                     d2 = distance_value[std::size_t(c[2])];
-        if (!std::isfinite(d0) || !std::isfinite(d1) || !std::isfinite(d2))
-          continue;
-        const double *p0 = local.point(c[0]), *p1 = local.point(c[1]), *p2 = local.point(c[2]);
-        const Vec3 q0{p0[0], p0[1], p0[2]}, q1{p1[0], p1[1], p1[2]}, q2{p2[0], p2[1], p2[2]};
-        const Vec3 face_normal = cross(q1 - q0, q2 - q0);
-        const double twice_area = norm(face_normal);
-        if (!(twice_area > 0))
-          continue;
-        // grad = sum d_i (n x e_i) / 2A, e_i the edge opposite corner i; times the area A.
-        const Vec3 e = d0 * (q2 - q1) + d1 * (q0 - q2) + d2 * (q1 - q0);
-        const Vec3 weighted = (0.5 / twice_area) * cross(face_normal, e);
-        for (int v : c) {
-          distance_gradient[std::size_t(v)] = distance_gradient[std::size_t(v)] + weighted;
-          gradient_weight[std::size_t(v)] += 0.5 * twice_area;
-        }
-      }
-      for (int v = 0; v < nv; ++v)
-        if (gradient_weight[std::size_t(v)] > 0)
-          distance_gradient[std::size_t(v)] =
-              (1 / gradient_weight[std::size_t(v)]) * distance_gradient[std::size_t(v)];
-    };
-
-    // Line density from the mesh (with `local_residual`): a defect is only seen where several
-    // lines of one setup cross it, so the lights are brought closer (never farther apart) until
-    // the lines lie at most `w` apart (s/|grad d|, from the gradient computed last) on three
-    // quarters of the surface facing them: a defect of the detection's size (R <= 3w/2) is then
-    // crossed by about three lines of every setup. The lines crowd where the surface curves
-    // (|grad d| grows with the curvature times the distance to the plane), so the flatter parts
-    // set the spacing, and the cost stays proportional to the facing area over w.
-    const double line_spacing = scale * mean_edge;
-    auto with_mesh_spacing = [&](const HL::Light_setup<GeomTraits>& setup) {
-      const auto z = setup.plane_normal_array();
-      std::vector<double> rates;
-      for (int v = 0; v < nv; ++v)
-        if (gradient_weight[std::size_t(v)] > 0 &&
-            dot(normals[std::size_t(v)], Vec3{z[0], z[1], z[2]}) >= minimum_facing)
-          rates.push_back(norm(distance_gradient[std::size_t(v)]));
-      if (rates.empty())
-        return setup;
-      const std::size_t q = rates.size() / 4;
-      std::nth_element(rates.begin(), rates.begin() + std::ptrdiff_t(q), rates.end());
-      const double spacing = line_spacing * rates[q];
-      if (!(spacing > 0) || !std::isfinite(spacing) || !(spacing < setup.spacing_value()))
-        return setup;
-      return HL::Light_setup<GeomTraits>(setup.base_point(), setup.light_direction(),
-                                         setup.plane_normal(), spacing);
-    };
-
     for (const auto& plane : planes)
       for (int o = 0; o < options.orientations; ++o) {
         HL::Light_setup<GeomTraits> turned =
             o == 0 ? plane : plane.rotated(plane.plane_normal(), pi * o / options.orientations);
         if (options.local_residual) {
-          compute_distance_gradient(turned);
-          turned = with_mesh_spacing(turned);
+          // Line density from the mesh: the lines at most `w` apart on most of the surface
+          // facing them, so that a defect of the detection's size is crossed by about three
+          // lines of every setup.
+          field.compute(local, normals, turned);
+          turned = HL::internal::with_spacing_from_mesh(turned, field, normals, minimum_facing,
+                                                        scale * mean_edge);
         }
         const auto across = turned.index_direction();
         for (int k = 0; k < options.offsets; ++k, ++setup_id) {
@@ -870,11 +734,11 @@ OutputIterator detect_highlight_line_irregularities(
                 const int compact = index < compact_of_index.size() ? compact_of_index[index] : -1;
                 if (compact < 0 ||
                     dot(normals[std::size_t(compact)], Vec3{z[0], z[1], z[2]}) < minimum_facing ||
-                    !(gradient_weight[std::size_t(compact)] > 0))
+                    !(field.weight[std::size_t(compact)] > 0))
                   continue;
                 sample_vertices[l][i] = compact;
                 level[i] = level_per_distance *
-                           dot(residual.residual[i], distance_gradient[std::size_t(compact)]);
+                           dot(residual.residual[i], field.gradient[std::size_t(compact)]);
                 if (std::isfinite(level[i]))
                   pooled.push_back(level[i]);
                 else
@@ -1079,11 +943,6 @@ OutputIterator detect_highlight_line_irregularities(
             std::size_t(1),
             std::size_t(std::ceil(options.minimum_evidence * double(seeing_setups[std::size_t(v)]) -
                                   1e-9)));
-      std::vector<Vec3> points(static_cast<std::size_t>(nv));
-      for (int v = 0; v < nv; ++v) {
-        const double* p = local.point(v);
-        points[std::size_t(v)] = Vec3{p[0], p[1], p[2]};
-      }
       const double w = scale * mean_edge;
       // A defect of radius R <= 3w/2 displaces the lines within R of its centre: its anomalies lie
       // in a disc of radius 2w. What the surroundings show is read up to three times as far.
@@ -1114,17 +973,7 @@ OutputIterator detect_highlight_line_irregularities(
             cluster_of[members[j]] = k;
             cluster_vertices.insert(subset[j].vertex);
           }
-          Vec3 mean{0, 0, 0};
-          for (int v : cluster_vertices)
-            mean = mean + (1.0 / double(cluster_vertices.size())) * points[std::size_t(v)];
-          double c[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-          for (int v : cluster_vertices) {
-            const Vec3 d = points[std::size_t(v)] - mean;
-            for (int r = 0; r < 3; ++r)
-              for (int q = 0; q < 3; ++q)
-                c[r][q] += d[std::size_t(r)] * d[std::size_t(q)] / double(cluster_vertices.size());
-          }
-          cluster_shape[k] = HL::internal::largest_spreads(c);
+          cluster_shape[k] = HL::internal::spreads_of_vertices(points, cluster_vertices);
         }
       };
       std::vector<std::size_t> all_anomalies(anomalies.size());
@@ -1381,20 +1230,7 @@ OutputIterator detect_highlight_line_irregularities(
         std::set<int> anomaly_vertices;
         for (std::size_t i : region.anomalies)
           anomaly_vertices.insert(anomalies[i].vertex);
-        Vec3 mean{0, 0, 0};
-        for (int v : anomaly_vertices) {
-          const double* p = local.point(v);
-          mean = mean + (1.0 / double(anomaly_vertices.size())) * Vec3{p[0], p[1], p[2]};
-        }
-        double c[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-        for (int v : anomaly_vertices) {
-          const double* p = local.point(v);
-          const Vec3 d{p[0] - mean[0], p[1] - mean[1], p[2] - mean[2]};
-          for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j)
-              c[i][j] += d[std::size_t(i)] * d[std::size_t(j)] / double(anomaly_vertices.size());
-        }
-        const auto axes = HL::internal::largest_spreads(c);
+        const auto axes = HL::internal::spreads_of_vertices(points, anomaly_vertices);
         const double w = scale * mean_edge;
         const double length = 4 * axes[0], width = (std::max)(4 * axes[1], w);
         // A defect is local: the response to one of radius R spreads over R + 3w/2 from its

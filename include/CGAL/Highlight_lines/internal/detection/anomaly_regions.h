@@ -434,6 +434,27 @@ inline std::array<double, 2> largest_spreads(const double (&c)[3][3])
   return {std::sqrt((std::max)(e[0], 0.0)), std::sqrt((std::max)(e[1], 0.0))};
 }
 
+// The spreads along the two main axes (largest_spreads()) of the points of `vertices` (indices
+// into `points`, each once): the shape of a set of anomalies.
+template <typename VertexRange>
+std::array<double, 2> spreads_of_vertices(const std::vector<vector3::Vec3>& points,
+                                          const VertexRange& vertices)
+{
+  using namespace vector3;
+  const double size = double(vertices.size());
+  Vec3 mean{0, 0, 0};
+  for (int v : vertices)
+    mean = mean + (1.0 / size) * points[std::size_t(v)];
+  double c[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+  for (int v : vertices) {
+    const Vec3 d = points[std::size_t(v)] - mean;
+    for (int r = 0; r < 3; ++r)
+      for (int q = 0; q < 3; ++q)
+        c[r][q] += d[std::size_t(r)] * d[std::size_t(q)] / size;
+  }
+  return largest_spreads(c);
+}
+
 } // namespace internal
 } // namespace Highlight_lines
 } // namespace CGAL
