@@ -15,6 +15,7 @@
 #include <CGAL/Highlight_lines/internal/detection/line_bending.h>
 #include <CGAL/Highlight_lines/internal/detection/line_peaks.h>
 #include <CGAL/Highlight_lines/internal/detection/mirror_symmetry.h>
+#include <CGAL/Highlight_lines/internal/detection/region_contrast.h>
 #include <CGAL/Highlight_lines/internal/detection/sharp_edge_vertices.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -541,6 +542,26 @@ OutputIterator detect_highlight_line_irregularities(
       compact_of_index.resize(index + 1, -1);
     compact_of_index[index] = v;
   }
+  // The compact id of a mesh vertex (-1 if it is not a model vertex), and that of the mesh
+  // vertex nearest to a highlight node (its vertex, or the nearer end of its edge).
+  auto compact_vertex = [&](vertex_descriptor v) {
+    const std::size_t index = get(vim, v);
+    return index < compact_of_index.size() ? compact_of_index[index] : -1;
+  };
+  auto nearest_compact_vertex = [&](const auto& node) {
+    vertex_descriptor v = node.vertex;
+    if (!node.is_on_vertex())
+      v = node.parameter < 0.5 ? source(node.halfedge, tm) : target(node.halfedge, tm);
+    return compact_vertex(v);
+  };
+  // The points of a highlight line, in doubles.
+  auto line_points = [](const auto& nodes, const auto& line, std::vector<Vec3>& polyline) {
+    polyline.clear();
+    for (std::size_t n : line.nodes) {
+      const auto& p = nodes[n].point;
+      polyline.push_back({CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
+    }
+  };
   double edge_sum = 0;
   std::size_t edge_count = 0;
   for (const auto& e : local.edge_vertices) {
@@ -632,13 +653,7 @@ OutputIterator detect_highlight_line_irregularities(
     std::vector<std::vector<double>> level_residuals;
     // With the local residual: every scored sample (vertex, setup, level residual less the
     // setup's median).
-    struct Sample
-    {
-      int vertex;
-      std::size_t setup;
-      float value;
-    };
-    std::vector<Sample> samples;
+    std::vector<HL::internal::Scored_sample> samples;
     HL::internal::Highlight_distance_field field; // with the local residual, per orientation
     // The light planes: `lights`, then (if all sides are looked at) the five other faces of a
     // cube around the mesh, so that every face is scored by the setups of at least one plane.
@@ -692,19 +707,14 @@ OutputIterator detect_highlight_line_irregularities(
             sample_vertices.resize(lines.size());
             std::vector<double> pooled;
             for (std::size_t l = 0; l < lines.size(); ++l) {
-              polyline.clear();
+              line_points(nodes, lines[l], polyline);
               line_breaks.clear();
               for (std::size_t n : lines[l].nodes) {
                 const auto& node = nodes[n];
-                const auto& p = node.point;
-                polyline.push_back(
-                    {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
                 // A node on a sharp edge's vertex or on an edge with one: the line kinks there.
                 bool on_feature = false;
                 auto check = [&](vertex_descriptor v) {
-                  const std::size_t index = get(vim, v);
-                  const int compact =
-                      index < compact_of_index.size() ? compact_of_index[index] : -1;
+                  const int compact = compact_vertex(v);
                   on_feature = on_feature || (compact >= 0 && sharp[std::size_t(compact)]);
                 };
                 if (node.is_on_vertex())
@@ -726,12 +736,8 @@ OutputIterator detect_highlight_line_irregularities(
               for (std::size_t i = 0; i < residual.valid.size(); ++i) {
                 if (!residual.valid[i])
                   continue;
-                const auto& node = nodes[lines[l].nodes[residual.nearest_vertex[i]]];
-                vertex_descriptor v = node.vertex;
-                if (!node.is_on_vertex())
-                  v = node.parameter < 0.5 ? source(node.halfedge, tm) : target(node.halfedge, tm);
-                const std::size_t index = get(vim, v);
-                const int compact = index < compact_of_index.size() ? compact_of_index[index] : -1;
+                const int compact =
+                    nearest_compact_vertex(nodes[lines[l].nodes[residual.nearest_vertex[i]]]);
                 if (compact < 0 ||
                     dot(normals[std::size_t(compact)], Vec3{z[0], z[1], z[2]}) < minimum_facing ||
                     !(field.weight[std::size_t(compact)] > 0))
@@ -799,12 +805,7 @@ OutputIterator detect_highlight_line_irregularities(
             const auto z = shifted.plane_normal_array();
             std::vector<double> pooled;
             for (std::size_t l = 0; l < lines.size(); ++l) {
-              polyline.clear();
-              for (std::size_t n : lines[l].nodes) {
-                const auto& p = nodes[n].point;
-                polyline.push_back(
-                    {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
-              }
+              line_points(nodes, lines[l], polyline);
               HL::internal::compute_line_bending(polyline, lines[l].is_closed, scales, bendings[l]);
               // Each sample's mesh vertex; samples where the surface turns too far away from the
               // lights are not scored.
@@ -813,12 +814,8 @@ OutputIterator detect_highlight_line_irregularities(
               for (std::size_t i = 0; i < bending.size(); ++i) {
                 if (bending[i] < 0)
                   continue;
-                const auto& node = nodes[lines[l].nodes[bendings[l].nearest_vertex[i]]];
-                vertex_descriptor v = node.vertex;
-                if (!node.is_on_vertex())
-                  v = node.parameter < 0.5 ? source(node.halfedge, tm) : target(node.halfedge, tm);
-                const std::size_t index = get(vim, v);
-                const int compact = index < compact_of_index.size() ? compact_of_index[index] : -1;
+                const int compact =
+                    nearest_compact_vertex(nodes[lines[l].nodes[bendings[l].nearest_vertex[i]]]);
                 if (compact < 0 ||
                     dot(normals[std::size_t(compact)], Vec3{z[0], z[1], z[2]}) < minimum_facing) {
                   bending[i] = -1;
@@ -1005,91 +1002,16 @@ OutputIterator detect_highlight_line_irregularities(
             members.push_back(i);
         cluster(members, asymmetric_cluster_of, asymmetric_shape);
       }
-      // The samples of each vertex (compressed rows), for the noise of a region's surroundings.
-      std::vector<std::size_t> sample_offsets(std::size_t(nv) + 1, 0);
-      for (const auto& sample : samples)
-        ++sample_offsets[std::size_t(sample.vertex) + 1];
-      for (std::size_t v = 1; v < sample_offsets.size(); ++v)
-        sample_offsets[v] += sample_offsets[v - 1];
-      std::vector<std::pair<std::size_t, float>> vertex_samples(samples.size());
-      {
-        std::vector<std::size_t> fill(sample_offsets.begin(), sample_offsets.end() - 1);
-        for (const auto& sample : samples)
-          vertex_samples[fill[std::size_t(sample.vertex)]++] = {sample.setup, sample.value};
-      }
+      // The contrast of each region with its surroundings (between `disc` and `surroundings`
+      // from its centre), from every scored sample.
+      HL::internal::Region_contrast contrast_with_surroundings(points, adjacency, sharp, samples,
+                                                               disc, surroundings);
       samples.clear();
       samples.shrink_to_fit();
-      // The contrast of a region with its surroundings: per light setup among its anomalies, the
-      // offset of its strongest anomaly from the median of the samples of the same setup in the
-      // surroundings (between `disc` and `surroundings` from the centre, reached along edges that
-      // cross no sharp edge), over their robust deviation; the median over the setups. A defect
-      // stands out of a quiet patch; the lines of a feature-rich patch (a scan's eyes and ears, a
-      // fillet and its neighbours) move as much around it as in it. -1 if no setup has samples
-      // enough around the region.
-      std::vector<double> distance_to_centre(static_cast<std::size_t>(nv), -1.0);
-      auto local_contrast = [&](const HL::internal::Peak_region& region) {
-        std::vector<int> reached{region.centre}, front{region.centre};
-        const Vec3& at = points[std::size_t(region.centre)];
-        distance_to_centre[std::size_t(region.centre)] = 0;
-        while (!front.empty()) {
-          const int v = front.back();
-          front.pop_back();
-          if (sharp[std::size_t(v)] && v != region.centre)
-            continue;
-          adjacency.for_each_neighbour(v, [&](int u) {
-            if (distance_to_centre[std::size_t(u)] >= 0)
-              return;
-            const double d = norm(points[std::size_t(u)] - at);
-            if (d > surroundings)
-              return;
-            distance_to_centre[std::size_t(u)] = d;
-            reached.push_back(u);
-            front.push_back(u);
-          });
-        }
-        std::vector<std::pair<std::size_t, std::size_t>> strongest_of_setup; // (setup, anomaly)
-        for (std::size_t i : region.anomalies) {
-          const auto& a = anomalies[i];
-          auto it = std::find_if(strongest_of_setup.begin(), strongest_of_setup.end(),
-                                 [&a](const auto& e) { return e.first == a.setup; });
-          if (it == strongest_of_setup.end())
-            strongest_of_setup.emplace_back(a.setup, i);
-          else if (a.score > anomalies[it->second].score)
-            it->second = i;
-        }
-        std::vector<std::vector<double>> values(strongest_of_setup.size());
-        for (int v : reached)
-          if (distance_to_centre[std::size_t(v)] >= disc)
-            for (std::size_t k = sample_offsets[std::size_t(v)];
-                 k < sample_offsets[std::size_t(v) + 1]; ++k)
-              for (std::size_t j = 0; j < strongest_of_setup.size(); ++j)
-                if (strongest_of_setup[j].first == vertex_samples[k].first)
-                  values[j].push_back(double(vertex_samples[k].second));
-        for (int v : reached)
-          distance_to_centre[std::size_t(v)] = -1;
-        std::vector<double> contrasts;
-        for (std::size_t j = 0; j < strongest_of_setup.size(); ++j) {
-          if (values[j].size() < 8)
-            continue;
-          const auto& a = anomalies[strongest_of_setup[j].second];
-          const HL::internal::Robust_statistics around =
-              HL::internal::robust_statistics_signed(values[j]);
-          // At least a quarter of the noise the anomaly's score was measured against.
-          const double floor = 0.25 * std::abs(a.value) / (std::max)(a.score, 1e-300);
-          contrasts.push_back(std::abs(a.value - around.median) /
-                              (std::max)({around.deviation, floor, 1e-300}));
-        }
-        if (contrasts.empty())
-          return -1.0;
-        std::nth_element(contrasts.begin(),
-                         contrasts.begin() + std::ptrdiff_t((contrasts.size() - 1) / 2),
-                         contrasts.end());
-        return contrasts[(contrasts.size() - 1) / 2];
-      };
       for (const auto& region : regions) {
         if (region.anomalies.empty() || region.faces.empty())
           continue;
-        const double contrast = local_contrast(region);
+        const double contrast = contrast_with_surroundings(region, anomalies);
         HL::Highlight_line_irregularity<TriangleMesh> irregularity;
         irregularity.faces.reserve(region.faces.size());
         for (int f : region.faces)
