@@ -7,6 +7,7 @@
 #include <CGAL/Highlight_lines/Active_set_box_QP_solver.h>
 #include <CGAL/Highlight_lines/Fairing_report.h>
 #include <CGAL/Highlight_lines/Fairness_energy.h>
+#include <CGAL/Highlight_lines/Highlight_line_sweeper.h>
 #include <CGAL/Highlight_lines/Invalid_input.h>
 #include <CGAL/Highlight_lines/Light_setup.h>
 #include <CGAL/Highlight_lines/parameters.h>
@@ -252,7 +253,7 @@ fair_with_highlight_lines(TriangleMesh& tm, const FaceRange& region,
   // Transaction: only movable vertices are ever written; keep them to restore on failure.
   std::vector<std::pair<vertex_descriptor, Point>> saved;
   for (int v : fairing.region().movable) {
-    const vertex_descriptor vd = fairing.sweeper().local_mesh().vertex_handles[std::size_t(v)];
+    const vertex_descriptor vd = fairing.engine().local_mesh().vertex_handles[std::size_t(v)];
     saved.emplace_back(vd, get(vpm, vd));
   }
   const bool keep_completed =

@@ -8,13 +8,8 @@
 #include <CGAL/Highlight_lines/Invalid_input.h>
 #include <CGAL/Highlight_lines/Light_setup.h>
 #include <CGAL/Highlight_lines/parameters.h>
-#include <CGAL/Highlight_lines/internal/Local_mesh.h>
-#include <CGAL/Highlight_lines/internal/model/highlight_nodes.h>
-#include <CGAL/Highlight_lines/internal/model/level_classification.h>
-#include <CGAL/Highlight_lines/internal/model/line_tracing.h>
-#include <CGAL/Highlight_lines/internal/model/node_connection.h>
+#include <CGAL/Highlight_lines/internal/model/model_engine.h>
 #include <CGAL/Highlight_lines/internal/parallel.h>
-#include <CGAL/Highlight_lines/internal/model/vertex_normals.h>
 
 #include <CGAL/Default.h>
 #include <CGAL/Kernel_traits.h>
@@ -52,15 +47,6 @@ struct Sweeper_geom_traits
       GeomTraits, typename CGAL::Kernel_traits<
                       typename boost::property_traits<typename Sweeper_vertex_point_map<
                           TriangleMesh, VertexPointMap>::type>::value_type>::Kernel>::type type;
-};
-
-// A mutex that a copy of its owner gets anew: it guards a cache of the owner, not its value.
-struct Copyable_mutex
-{
-  std::mutex mutex;
-  Copyable_mutex() = default;
-  Copyable_mutex(const Copyable_mutex&) {}
-  Copyable_mutex& operator=(const Copyable_mutex&) { return *this; }
 };
 
 } // namespace internal
@@ -113,6 +99,7 @@ class Highlight_line_sweeper
   typedef typename internal::Sweeper_geom_traits<TriangleMesh, VertexPointMap, GeomTraits>::type Gt;
   // Instantiating Is_parallel checks the tag (and that TBB is there for Parallel_tag).
   static constexpr bool is_parallel = internal::Is_parallel<ConcurrencyTag>::value;
+  typedef internal::Raw_model Raw_model;
 
 public:
   /// The type of the models computed.
@@ -140,60 +127,17 @@ public:
   template <typename NamedParameters = CGAL::parameters::Default_named_parameters>
   explicit Highlight_line_sweeper(const TriangleMesh& tm,
                                   const NamedParameters& np = CGAL::parameters::default_values())
-      : tm_(&tm), vpm_(CGAL::parameters::choose_parameter(
-                      CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-                      get_const_property_map(CGAL::vertex_point, tm)))
+      : engine_(tm,
+                CGAL::parameters::choose_parameter(
+                    CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                    get_const_property_map(CGAL::vertex_point, tm)),
+                np)
   {
-    using CGAL::parameters::get_parameter_reference;
-    using CGAL::parameters::is_default_parameter;
-    auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
-    auto fim = CGAL::get_initialized_face_index_map(tm, np);
-    auto him = CGAL::get_initialized_halfedge_index_map(tm, np);
-    constexpr bool whole_mesh =
-        is_default_parameter<NamedParameters, internal_np::face_range_t>::value;
-    if constexpr (whole_mesh)
-      internal::build_local_mesh(tm, faces(tm), true, vpm_, vim, fim, him, mesh_);
-    else
-      internal::build_local_mesh(tm, get_parameter_reference(np, internal_np::face_range), false,
-                                 vpm_, vim, fim, him, mesh_);
-    compute_normals();
-    internal::compute_owned_edges(mesh_, owned_edges_);
   }
 
   /// Re-reads the points of all vertices involved from the vertex point map and recomputes
   /// the normals. \throws Invalid_input as the constructor.
-  void update_positions()
-  {
-    // Vertex order decides which non-finite coordinate is reported, also when parallel.
-    const std::size_t nv = mesh_.vertex_handles.size();
-    const internal::Chunks chunks = internal::chunks_for<ConcurrencyTag>(nv, std::size_t(1) << 14);
-    std::vector<std::size_t> first_bad(chunks.size(), nv);
-    internal::for_each_chunk<ConcurrencyTag>(
-        chunks, [&](std::size_t c, std::size_t b, std::size_t e) {
-          for (std::size_t v = b; v < e; ++v) {
-            const auto& p = get(vpm_, mesh_.vertex_handles[v]);
-            const double x[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()),
-                                 CGAL::to_double(p.z())};
-            if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2])) {
-              first_bad[c] = v;
-              return;
-            }
-            for (int k = 0; k < 3; ++k)
-              mesh_.xyz[3 * v + std::size_t(k)] = x[k];
-          }
-        });
-    for (std::size_t bad : first_bad)
-      if (bad < nv) {
-        const auto& p = get(vpm_, mesh_.vertex_handles[bad]);
-        const double c[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()),
-                             CGAL::to_double(p.z())};
-        throw Invalid_input(Invalid_input::Problem::NON_FINITE_COORDINATE,
-                            "vertex " + std::to_string(mesh_.vertex_indices[bad]) +
-                                " has a non-finite coordinate " + internal::describe_point(c),
-                            mesh_.vertex_indices[bad]);
-      }
-    compute_normals();
-  }
+  void update_positions() { engine_.update_positions(); }
 
   /*!
   Computes the highlight line model for `lights`.
@@ -268,7 +212,7 @@ public:
         internal::prefetch(&traced.degree[later]);
         const int edge = nodes.nodes[std::size_t(traced.new_order[i + ahead / 2])].edge;
         if (edge >= 0)
-          internal::prefetch(&mesh_.edge_halfedges[std::size_t(edge)]);
+          internal::prefetch(&engine_.local_mesh().edge_halfedges[std::size_t(edge)]);
       }
       const int old_id = traced.new_order[i];
       const internal::Raw_node& raw = nodes.nodes[std::size_t(old_id)];
@@ -277,13 +221,13 @@ public:
       node.level = raw.level;
       node.degree = std::size_t(traced.degree[std::size_t(old_id)]);
       if (raw.edge >= 0) {
-        node.halfedge = mesh_.edge_halfedges[std::size_t(raw.edge)];
+        node.halfedge = engine_.local_mesh().edge_halfedges[std::size_t(raw.edge)];
         node.parameter = raw.parameter;
         node.vertex = boost::graph_traits<TriangleMesh>::null_vertex();
       } else {
         node.halfedge = boost::graph_traits<TriangleMesh>::null_halfedge();
         node.parameter = 0;
-        node.vertex = mesh_.vertex_handles[std::size_t(raw.vertex)];
+        node.vertex = engine_.local_mesh().vertex_handles[std::size_t(raw.vertex)];
       }
     }
     std::vector<typename Model::Line>& model_lines = model.lines_to_overwrite();
@@ -379,73 +323,26 @@ public:
     Raw_model model;
     model.keep_levels = true;
     classify(lights, model, facing_side_only(np));
-    for (std::size_t v = 0; v < mesh_.number_of_model_vertices; ++v) {
+    for (std::size_t v = 0; v < engine_.local_mesh().number_of_model_vertices; ++v) {
       const internal::Vertex_level& level = model.levels[v];
-      put(distances, mesh_.vertex_handles[v],
+      put(distances, engine_.local_mesh().vertex_handles[v],
           level.defined() ? level.distance : std::numeric_limits<double>::quiet_NaN());
     }
   }
 
   /// Number of faces the model is computed on.
-  std::size_t number_of_faces() const { return mesh_.number_of_model_faces; }
+  std::size_t number_of_faces() const { return engine_.local_mesh().number_of_model_faces; }
   /// Number of vertices of those faces.
-  std::size_t number_of_vertices() const { return mesh_.number_of_model_vertices; }
+  std::size_t number_of_vertices() const { return engine_.local_mesh().number_of_model_vertices; }
 
   /// \cond SKIP_IN_MANUAL
-  const internal::Local_mesh<TriangleMesh>& local_mesh() const { return mesh_; }
-  const internal::Vertex_normals& vertex_normals() const { return normals_; }
-  internal::Classification_statistics statistics() const
-  {
-    std::lock_guard<std::mutex> guard(statistics_mutex_.mutex);
-    return statistics_;
-  }
+  const internal::Local_mesh<TriangleMesh>& local_mesh() const { return engine_.local_mesh(); }
+  const internal::Vertex_normals& vertex_normals() const { return engine_.vertex_normals(); }
+  internal::Classification_statistics statistics() const { return engine_.statistics(); }
 
-  // The model in local ids, as the fairing works with it.
-  struct Raw_model
+  const internal::Model_engine<TriangleMesh, Vpm, ConcurrencyTag>& engine() const
   {
-    // The classes of the vertices: filled only if keep_levels (compute() does not need them).
-    std::vector<internal::Vertex_level> levels;
-    bool keep_levels = true;
-    std::vector<long long> keys;   // internal::level_key() of each vertex
-    std::vector<double> distances; // d of each vertex (Vertex_level::distance)
-    internal::Classification_summary summary;
-    internal::Highlight_nodes nodes;
-    internal::Highlight_segments segments;
-    internal::Traced_lines lines;  // node ids in lines are canonical ids: see node()
-    internal::Level_window window; // as used: with the facing window of the sweep
-    const internal::Raw_node& node(std::size_t canonical_id) const
-    {
-      return nodes.nodes[std::size_t(lines.new_order[canonical_id])];
-    }
-  };
-
-  // Without `trace`, out.lines is left as it was (compute_segments() needs no lines).
-  void compute_raw(const Lights& lights, const internal::Level_window& options,
-                   bool facing_side_only, Raw_model& out, bool trace = true) const
-  {
-    internal::Level_window window = options;
-    internal::Highlight_nodes& nodes = out.nodes;
-    classify(lights, out, facing_side_only);
-    internal::find_active_faces<ConcurrencyTag>(mesh_, owned_edges_, out.keys, window,
-                                                nodes.active_faces);
-    // Active faces do not depend on the facing window (see is_active_face()).
-    internal::set_facing_window<ConcurrencyTag>(normals_, lights.plane_normal_array(), out.keys,
-                                                window);
-    out.window = window;
-    const std::vector<int>& on_level = out.summary.on_level;
-    // Sequentially, the nodes are placed and connected in one pass over the active faces.
-    if (!is_parallel && !internal::may_exceed_node_ids(
-                            window, nodes.active_faces.size(),
-                            internal::number_of_vertex_nodes(on_level, out.keys, window))) {
-      internal::place_and_connect_nodes(mesh_, out.keys, out.distances, on_level,
-                                        lights.spacing_value(), window, nodes, out.segments);
-    } else {
-      internal::compute_highlight_nodes<ConcurrencyTag>(mesh_, out.keys, out.distances, on_level,
-                                                        lights.spacing_value(), window, nodes);
-      internal::connect_highlight_nodes<ConcurrencyTag>(mesh_, nodes, window, out.segments);
-    }
-    if (trace)
-      internal::trace_lines(nodes.nodes, out.segments.segments, out.lines);
+    return engine_;
   }
 
   template <typename NamedParameters>
@@ -479,43 +376,29 @@ public:
   void classify(const Lights& lights, std::vector<internal::Vertex_level>& levels,
                 bool facing_side_only = false) const
   {
-    Raw_model model;
-    classify(lights, model, facing_side_only);
-    levels = std::move(model.levels);
+    engine_.classify(lights, levels, facing_side_only);
   }
-
-  void classify(const Lights& lights, Raw_model& out, bool facing_side_only) const
-  {
-    internal::Classification_statistics statistics;
-    internal::classify_vertices<ConcurrencyTag>(
-        classifier(lights), mesh_.number_of_model_vertices, facing_side_only,
-        out.keep_levels ? &out.levels : nullptr, out.keys, out.distances, out.summary, statistics);
-    std::lock_guard<std::mutex> guard(statistics_mutex_.mutex);
-    statistics_.static_filter_failures += statistics.static_filter_failures;
-    statistics_.interval_filter_failures += statistics.interval_filter_failures;
-  }
-
   internal::Level_classifier<TriangleMesh> classifier(const Lights& lights) const
   {
-    return internal::Level_classifier<TriangleMesh>(
-        mesh_, normals_, lights.base_point_array(), lights.light_direction_array(),
-        lights.plane_normal_array(), lights.spacing_value());
+    return engine_.classifier(lights);
   }
   /// \endcond
 
 private:
-  void compute_normals() { internal::compute_vertex_normals<ConcurrencyTag>(mesh_, normals_); }
+  void compute_raw(const Lights& lights, const internal::Level_window& window,
+                   bool facing_side_only, Raw_model& out, bool trace = true) const
+  {
+    engine_.compute_raw(lights, window, facing_side_only, out, trace);
+  }
+  void classify(const Lights& lights, Raw_model& out, bool facing_side_only) const
+  {
+    engine_.classify(lights, out, facing_side_only);
+  }
 
-  const TriangleMesh* tm_;
-  Vpm vpm_;
-  internal::Local_mesh<TriangleMesh> mesh_;
-  internal::Vertex_normals normals_;
-  std::vector<unsigned char> owned_edges_; // per model face: internal::compute_owned_edges()
+  internal::Model_engine<TriangleMesh, Vpm, ConcurrencyTag> engine_;
   // Reused across sweeps (no reallocation, no page faults) by one call at a time.
   mutable Raw_model raw_;
   mutable internal::Copyable_mutex raw_mutex_;
-  mutable internal::Classification_statistics statistics_;
-  mutable internal::Copyable_mutex statistics_mutex_;
 };
 
 } // namespace Highlight_lines

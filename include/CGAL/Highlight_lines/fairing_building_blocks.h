@@ -65,7 +65,7 @@ OutputIterator movable_vertices(const TriangleMesh& tm, const FaceRange& region,
                                    typename Kernel::Vector_3(0, 0, 1), 1);
   const auto setup = internal::fairing_setup(tm, region, lights, np);
   for (int v : setup->region().movable)
-    *out++ = setup->sweeper().local_mesh().vertex_handles[std::size_t(v)];
+    *out++ = setup->engine().local_mesh().vertex_handles[std::size_t(v)];
   return out;
 }
 

@@ -40,13 +40,13 @@ TEST(NodeJacobian, MatchesFiniteDifferences)
   HL::Active_set_box_QP_solver solver;
   const Vpm vpm = get(CGAL::vertex_point, mesh);
   Fairing fairing(mesh, region, neighborhood, vpm, lights, options, solver);
-  const auto& lm = fairing.sweeper().local_mesh();
+  const auto& lm = fairing.engine().local_mesh();
   const auto directions = fairing.movable_normals();
 
   // Recompute the model the Fairing object sees.
-  HL::Highlight_line_sweeper<Surface_mesh, Vpm, K> probe(
-      mesh, HL::parameters::face_range(neighborhood).vertex_point_map(vpm));
-  typename HL::Highlight_line_sweeper<Surface_mesh, Vpm, K>::Raw_model model;
+  HL::internal::Model_engine<Surface_mesh, Vpm, CGAL::Sequential_tag> probe(
+      mesh, vpm, HL::parameters::face_range(neighborhood));
+  HL::internal::Raw_model model;
   probe.compute_raw(lights, HL::internal::Level_window(), false, model);
   const HL::internal::Node_jacobian J = fairing.jacobian(directions);
 

@@ -6,7 +6,6 @@
 
 #include <CGAL/Highlight_lines/Fairing_report.h>
 #include <CGAL/Highlight_lines/Fairness_energy.h>
-#include <CGAL/Highlight_lines/Highlight_line_sweeper.h>
 #include <CGAL/Highlight_lines/Invalid_input.h>
 #include <CGAL/Highlight_lines/Light_setup.h>
 #include <CGAL/Highlight_lines/internal/fairing/curvature_variation_energy.h>
@@ -18,6 +17,7 @@
 #include <CGAL/Highlight_lines/internal/fairing/ogh_curve.h>
 #include <CGAL/Highlight_lines/internal/fairing/program_pattern.h>
 #include <CGAL/Highlight_lines/internal/fairing/willmore_energy.h>
+#include <CGAL/Highlight_lines/internal/model/model_engine.h>
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -46,8 +46,7 @@ struct Fairing_options
 template <typename TriangleMesh, typename VertexPointMap, typename GeomTraits, typename Solver>
 class Fairing
 {
-  typedef Highlight_line_sweeper<TriangleMesh, VertexPointMap, GeomTraits> Sweeper;
-  typedef typename Sweeper::Raw_model Raw_model;
+  typedef Model_engine<TriangleMesh, VertexPointMap, CGAL::Sequential_tag> Engine;
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
   typedef typename boost::property_traits<VertexPointMap>::value_type Point;
 
@@ -59,9 +58,9 @@ public:
       VertexPointMap vpm, const Light_setup<GeomTraits>& lights, const Fairing_options& options,
       Solver& solver)
       : tm_(tm), vpm_(vpm), lights_(lights), options_(options), solver_(solver),
-        sweeper_(tm, Highlight_lines::parameters::face_range(neighborhood).vertex_point_map(vpm))
+        engine_(tm, vpm, Highlight_lines::parameters::face_range(neighborhood))
   {
-    const Local_mesh<TriangleMesh>& lm = sweeper_.local_mesh();
+    const Local_mesh<TriangleMesh>& lm = engine_.local_mesh();
     build_fairing_region(
         tm, lm, [&region](auto f) { return region.count(f) != 0; }, region_);
     if (region_.movable.empty())
@@ -126,7 +125,7 @@ public:
       accelerate_tail(x, step);
       take_step(x, directions, step);
       report.history.push_back(step);
-      sweeper_.update_positions();
+      engine_.update_positions();
       compute_model();
       const bool go_on = visitor(step);
       report.iterations = iteration + 1; // completed: the visitor returned
@@ -168,10 +167,10 @@ public:
     if (options_.fairness_energy == Fairness_energy::CURVATURE_VARIATION &&
         fit_options_.method == Mean_curvature_fit_options::Method::FIT_ON_DEGENERATE_RINGS)
       degenerate_rings_ = vertices_with_degenerate_rings(
-          local_points(), sweeper_.local_mesh().face_vertices, fit_options_.sliver_angle);
+          local_points(), engine_.local_mesh().face_vertices, fit_options_.sliver_angle);
     if (options_.fairness_energy == Fairness_energy::CURVATURE_VARIATION)
-      crease_vertices_ = vertices_on_sharp_edges(
-          local_points(), sweeper_.local_mesh().face_vertices, crease_angle());
+      crease_vertices_ = vertices_on_sharp_edges(local_points(), engine_.local_mesh().face_vertices,
+                                                 crease_angle());
     desired_.clear();
     make_desired_lines(report);
     // From now on only the targeted lines count (q_diff), so the next models are computed for
@@ -195,15 +194,15 @@ public:
   const std::vector<std::pair<vertex_descriptor, Point>>& checkpoint() const { return checkpoint_; }
 
   const Fairing_region& region() const { return region_; }
-  const Sweeper& sweeper() const { return sweeper_; }
+  const Engine& engine() const { return engine_; }
   const std::vector<Desired_line>& desired_lines() const { return desired_; }
   const Raw_model& model() const { return model_; }
 
   // Public for the tests: the rows dQ/dx of the nodes of the current model.
   Node_jacobian jacobian(const std::vector<Vec3>& directions) const
   {
-    const Local_mesh<TriangleMesh>& lm = sweeper_.local_mesh();
-    return Node_jacobian(lm, region_, sweeper_.vertex_normals(), directions,
+    const Local_mesh<TriangleMesh>& lm = engine_.local_mesh();
+    return Node_jacobian(lm, region_, engine_.vertex_normals(), directions,
                          lights_.base_point_array(), lights_.light_direction_array(),
                          lights_.plane_normal_array());
   }
@@ -212,14 +211,14 @@ public:
   {
     std::vector<Vec3> directions;
     for (int v : region_.movable)
-      directions.push_back(sweeper_.vertex_normals().unit_normal(v));
+      directions.push_back(engine_.vertex_normals().unit_normal(v));
     return directions;
   }
 
 private:
   Vec3 position(int v) const
   {
-    const double* p = sweeper_.local_mesh().point(v);
+    const double* p = engine_.local_mesh().point(v);
     return {p[0], p[1], p[2]};
   }
   double distance(int a, int b) const
@@ -230,7 +229,7 @@ private:
   }
   Vec3 face_cross(int f) const
   {
-    const auto& c = sweeper_.local_mesh().face_vertices[std::size_t(f)];
+    const auto& c = engine_.local_mesh().face_vertices[std::size_t(f)];
     const Vec3 p0 = position(c[0]), p1 = position(c[1]), p2 = position(c[2]);
     return vector3::cross({p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]},
                           {p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]});
@@ -240,8 +239,8 @@ private:
   bool is_folded(int f) const
   {
     Vec3 corner_normals{0, 0, 0};
-    for (int c : sweeper_.local_mesh().face_vertices[std::size_t(f)]) {
-      const Vec3 m = sweeper_.vertex_normals().unit_normal(c);
+    for (int c : engine_.local_mesh().face_vertices[std::size_t(f)]) {
+      const Vec3 m = engine_.vertex_normals().unit_normal(c);
       for (int k = 0; k < 3; ++k)
         corner_normals[std::size_t(k)] += m[std::size_t(k)];
     }
@@ -250,7 +249,7 @@ private:
   // The smallest corner angle of face f, in radians.
   double smallest_angle(int f) const
   {
-    const auto& c = sweeper_.local_mesh().face_vertices[std::size_t(f)];
+    const auto& c = engine_.local_mesh().face_vertices[std::size_t(f)];
     double smallest = 4;
     for (int k = 0; k < 3; ++k) {
       const Vec3 p = position(c[std::size_t(k)]), a = position(c[std::size_t((k + 1) % 3)]),
@@ -272,7 +271,7 @@ private:
     return shortest;
   }
 
-  void compute_model() { sweeper_.compute_raw(lights_, model_window_, false, model_); }
+  void compute_model() { engine_.compute_raw(lights_, model_window_, false, model_); }
 
   // The levels that can cross R: a node of level m lies on an edge of a face of R, between
   // ends of levels k (k s <= d < (k + 1) s), so m is in [min k, max k + 1] over R's vertices.
@@ -282,10 +281,10 @@ private:
   void restrict_to_region_levels(Level_window& window) const
   {
     std::vector<Vertex_level> levels;
-    sweeper_.classify(lights_, levels);
+    engine_.classify(lights_, levels);
     long long lowest = 0, highest = 0;
     bool any = false;
-    const Local_mesh<TriangleMesh>& lm = sweeper_.local_mesh();
+    const Local_mesh<TriangleMesh>& lm = engine_.local_mesh();
     for (std::size_t f = 0; f < region_.face_in_region.size(); ++f) {
       if (!region_.face_in_region[f])
         continue;
@@ -308,7 +307,7 @@ private:
   {
     checkpoint_.clear();
     for (int v : region_.movable) {
-      const vertex_descriptor vd = sweeper_.local_mesh().vertex_handles[std::size_t(v)];
+      const vertex_descriptor vd = engine_.local_mesh().vertex_handles[std::size_t(v)];
       checkpoint_.emplace_back(vd, get(vpm_, vd));
     }
   }
@@ -356,7 +355,7 @@ private:
 
   std::vector<Vec3> local_points() const
   {
-    std::vector<Vec3> points(sweeper_.local_mesh().vertex_handles.size());
+    std::vector<Vec3> points(engine_.local_mesh().vertex_handles.size());
     for (std::size_t v = 0; v < points.size(); ++v)
       points[v] = position(int(v));
     return points;
@@ -367,7 +366,7 @@ private:
   {
     energy_normals_.clear();
     for (int v : region_.energy_vertices)
-      energy_normals_.push_back(sweeper_.vertex_normals().unit_normal(v));
+      energy_normals_.push_back(engine_.vertex_normals().unit_normal(v));
     return energy_normals_;
   }
 
@@ -401,7 +400,7 @@ private:
   Frozen_curvature_variation freeze_variation(std::vector<Vec3>& normals) const
   {
     Frozen_curvature_variation frozen = freeze_curvature_variation(
-        local_points(), sweeper_.local_mesh().face_vertices, region_.energy_vertices,
+        local_points(), engine_.local_mesh().face_vertices, region_.energy_vertices,
         [this](int v, std::vector<int>& out) {
           for (int i = region_.vertex_neighbor_begin[std::size_t(v)];
                i < region_.vertex_neighbor_begin[std::size_t(v) + 1]; ++i)
@@ -410,7 +409,7 @@ private:
         length_scale_, fit_options_, &degenerate_rings_, &crease_vertices_);
     normals.clear();
     for (int v : frozen.weights.energy_vertices)
-      normals.push_back(sweeper_.vertex_normals().unit_normal(v));
+      normals.push_back(engine_.vertex_normals().unit_normal(v));
     if (frozen.fit.method != Mean_curvature_fit_options::Method::COTANGENT)
       fit_mean_curvatures(frozen, local_points(), normals);
     return frozen;
@@ -429,7 +428,7 @@ private:
                                                directions, add_P, add_q);
     }
     return add_willmore_quadratic(
-        freeze_willmore_weights(points, sweeper_.local_mesh().face_vertices,
+        freeze_willmore_weights(points, engine_.local_mesh().face_vertices,
                                 region_.energy_vertices),
         points, region_.variable, directions, add_P, add_q,
         options_.fairness_energy == Fairness_energy::MEAN_CURVATURE ? &energy_normals() : nullptr);
@@ -469,7 +468,7 @@ private:
     step.lines_targeted = pieces.size();
     // The solver's set_P() adds: one call per pair and node, duplicates summed there.
     trace += add_difference_quadratic(
-        model_, pieces, jacobian(directions), sweeper_.local_mesh().edge_vertices,
+        model_, pieces, jacobian(directions), engine_.local_mesh().edge_vertices,
         lights_.spacing_value(), w2,
         [this](int a, int b, double v) { solver_.set_P(std::size_t(a), std::size_t(b), v); },
         [this](int a, double v) { solver_.set_q(std::size_t(a), v); });
@@ -512,7 +511,7 @@ private:
     std::vector<std::array<int, 3>> corners;
     std::vector<Vec3> input_cross;
     for (int f : faces) {
-      corners.push_back(sweeper_.local_mesh().face_vertices[std::size_t(f)]);
+      corners.push_back(engine_.local_mesh().face_vertices[std::size_t(f)]);
       input_cross.push_back(is_folded(f) ? Vec3{0, 0, 0} : face_cross(f));
     }
     flip_guard_ = Flip_guard(std::move(corners), std::move(input_cross));
@@ -756,7 +755,7 @@ private:
     }
     for (std::size_t i = 0; i < n; ++i) {
       const Vec3& p = moved[std::size_t(region_.movable[i])];
-      put(vpm_, sweeper_.local_mesh().vertex_handles[std::size_t(region_.movable[i])],
+      put(vpm_, engine_.local_mesh().vertex_handles[std::size_t(region_.movable[i])],
           Point(p[0], p[1], p[2]));
     }
     applied_ = x;
@@ -877,7 +876,7 @@ private:
       return;
     for (const auto& entry : best_points_)
       put(vpm_, entry.first, entry.second);
-    sweeper_.update_positions();
+    engine_.update_positions();
     compute_model();
     report.history.back() = current_energies();
     report.returned_best_iterate = true;
@@ -888,7 +887,7 @@ private:
   Light_setup<GeomTraits> lights_;
   Fairing_options options_;
   Solver& solver_;
-  Sweeper sweeper_;
+  Engine engine_;
   Fairing_region region_;
   Raw_model model_;
   Level_window model_window_; // the levels of the desired lines, see make_targets()
