@@ -643,6 +643,20 @@ OutputIterator detect_highlight_line_irregularities(
 
     std::vector<HL::internal::Anomaly> anomalies;
     std::size_t line_id = 0, setup_id = 0;
+    // A peak of the current line and setup becomes an anomaly unless it lies next to a sharp
+    // edge; the new anomaly, or null.
+    auto add_anomaly = [&](int vertex, double score, double bending) -> HL::internal::Anomaly* {
+      if (near_sharp[std::size_t(vertex)])
+        return nullptr;
+      HL::internal::Anomaly a;
+      a.vertex = vertex;
+      a.line = line_id;
+      a.setup = setup_id;
+      a.score = score;
+      a.bending = bending;
+      anomalies.push_back(a);
+      return &anomalies.back();
+    };
     std::vector<Vec3> polyline;
     std::vector<std::vector<int>> sample_vertices;
     std::vector<HL::internal::Line_bending> bendings;
@@ -786,17 +800,11 @@ OutputIterator detect_highlight_line_irregularities(
                 if (!(shift > options.minimum_bending) ||
                     !is_local_maximum(magnitude, i, lines[l].is_closed))
                   continue;
-                if (near_sharp[std::size_t(sample_vertices[l][i])])
-                  continue;
-                HL::internal::Anomaly a;
-                a.vertex = sample_vertices[l][i];
-                a.line = line_id;
-                a.setup = setup_id;
-                a.score = magnitude[i];
-                a.noise = line_noise;
-                a.value = level[i] - stats.median;
-                a.bending = shift;
-                anomalies.push_back(a);
+                HL::internal::Anomaly* a = add_anomaly(sample_vertices[l][i], magnitude[i], shift);
+                if (a) {
+                  a->noise = line_noise;
+                  a->value = level[i] - stats.median;
+                }
               }
             }
           } else {
@@ -843,15 +851,7 @@ OutputIterator detect_highlight_line_irregularities(
                 if (!(score > options.threshold) ||
                     !is_local_maximum(bending, i, lines[l].is_closed))
                   continue;
-                if (near_sharp[std::size_t(sample_vertices[l][i])])
-                  continue;
-                HL::internal::Anomaly a;
-                a.vertex = sample_vertices[l][i];
-                a.line = line_id;
-                a.setup = setup_id;
-                a.score = score;
-                a.bending = bending[i];
-                anomalies.push_back(a);
+                add_anomaly(sample_vertices[l][i], score, bending[i]);
               }
             }
           }
