@@ -58,14 +58,26 @@ template <typename TriangleMesh, typename FaceRange, typename OutputIterator,
 OutputIterator movable_vertices(const TriangleMesh& tm, const FaceRange& region, OutputIterator out,
                                 const NamedParameters& np = CGAL::parameters::default_values())
 {
-  typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type Kernel;
-  // Any light setup: movability does not depend on the lights.
-  const Light_setup<Kernel> lights(typename Kernel::Point_3(0, 0, 1),
-                                   typename Kernel::Vector_3(1, 0, 0),
-                                   typename Kernel::Vector_3(0, 0, 1), 1);
-  const auto setup = internal::fairing_setup(tm, region, lights, np);
-  for (int v : setup->region().movable)
-    *out++ = setup->engine().local_mesh().vertex_handles[std::size_t(v)];
+  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type Vertex_point_map;
+  const Vertex_point_map vpm = CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+      get_const_property_map(CGAL::vertex_point, tm));
+  const int rings = CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter(np, internal_np::neighborhood_rings), 3);
+  const auto region_set =
+      internal::checked_region(tm, region, get_initialized_face_index_map(tm, np));
+  // The local mesh of the fairing (its neighbourhood, checked as the fairing checks it) and
+  // its region; no lights, no energy.
+  const internal::Model_engine<TriangleMesh, Vertex_point_map, CGAL::Sequential_tag> engine(
+      tm, vpm,
+      parameters::face_range(internal::neighborhood(tm, region_set, (std::max)(rings, 2))));
+  internal::Fairing_region fairing_region;
+  internal::build_fairing_region(
+      tm, engine.local_mesh(), [&region_set](auto f) { return region_set.count(f) != 0; },
+      fairing_region);
+  internal::require_movable_vertex(fairing_region);
+  for (int v : fairing_region.movable)
+    *out++ = engine.local_mesh().vertex_handles[std::size_t(v)];
   return out;
 }
 

@@ -63,11 +63,7 @@ public:
     const Local_mesh<TriangleMesh>& lm = engine_.local_mesh();
     build_fairing_region(
         tm, lm, [&region](auto f) { return region.count(f) != 0; }, region_);
-    if (region_.movable.empty())
-      throw Invalid_input(Invalid_input::Problem::NO_MOVABLE_VERTEX,
-                          "the fairing region has no movable vertex: a vertex can move only if "
-                          "it and all its neighbours lie inside the region (not on its border nor "
-                          "on a mesh border); enlarge the region by at least two rings");
+    require_movable_vertex(region_);
     // Mean edge length in R (eq. 17) and the length scale of q_diff's normalisation.
     double length_sum = 0, area = 0;
     std::size_t edges = 0;

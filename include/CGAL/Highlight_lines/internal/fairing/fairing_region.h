@@ -4,6 +4,7 @@
 #ifndef CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_FAIRING_REGION_H
 #define CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_FAIRING_REGION_H
 
+#include <CGAL/Highlight_lines/Invalid_input.h>
 #include <CGAL/Highlight_lines/internal/Local_mesh.h>
 
 #include <CGAL/boost/graph/iterator.h>
@@ -126,6 +127,16 @@ void build_fairing_region(const TriangleMesh& tm, const Local_mesh<TriangleMesh>
       out.movable.push_back(int(v));
     }
   }
+}
+
+// Throws Invalid_input if `region` has no movable vertex (nothing to fair).
+inline void require_movable_vertex(const Fairing_region& region)
+{
+  if (region.movable.empty())
+    throw Invalid_input(Invalid_input::Problem::NO_MOVABLE_VERTEX,
+                        "the fairing region has no movable vertex: a vertex can move only if "
+                        "it and all its neighbours lie inside the region (not on its border nor "
+                        "on a mesh border); enlarge the region by at least two rings");
 }
 
 } // namespace internal
