@@ -6,7 +6,6 @@
 
 #include <CGAL/fair_with_highlight_lines.h>
 
-#include <memory>
 #include <vector>
 
 namespace CGAL {
@@ -14,11 +13,11 @@ namespace Highlight_lines {
 
 /// \cond SKIP_IN_MANUAL
 namespace internal {
-// The fairing set-up of fair_with_highlight_lines() without iterating: what the building
-// blocks below report.
+// The fairing problem of fair_with_highlight_lines() without the iteration: what the building
+// blocks below report. It only reads the mesh.
 template <typename TriangleMesh, typename FaceRange, typename GeomTraits, typename NamedParameters>
-auto fairing_setup(const TriangleMesh& tm, const FaceRange& region,
-                   const Light_setup<GeomTraits>& lights, const NamedParameters& np)
+auto fairing_problem(const TriangleMesh& tm, const FaceRange& region,
+                     const Light_setup<GeomTraits>& lights, const NamedParameters& np)
 {
   typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type Vertex_point_map;
   const Vertex_point_map vpm = CGAL::parameters::choose_parameter(
@@ -28,15 +27,10 @@ auto fairing_setup(const TriangleMesh& tm, const FaceRange& region,
   options.neighborhood_rings = CGAL::parameters::choose_parameter(
       CGAL::parameters::get_parameter(np, internal_np::neighborhood_rings), 3);
   options.window = Highlight_line_sweeper<TriangleMesh>::level_window(np);
-  const auto fim = get_initialized_face_index_map(tm, np);
-  const auto region_set = checked_region(tm, region, fim);
-  static Active_set_box_QP_solver unused_solver;
-  // The set-up only reads the mesh: the const_cast lets it share the fairing's code.
-  return std::make_unique<
-      Fairing<TriangleMesh, Vertex_point_map, GeomTraits, Active_set_box_QP_solver>>(
-      const_cast<TriangleMesh&>(tm), region_set,
-      neighborhood(tm, region_set, (std::max)(options.neighborhood_rings, 2)), vpm, lights, options,
-      unused_solver);
+  const auto region_set = checked_region(tm, region, get_initialized_face_index_map(tm, np));
+  return Fairing_problem<TriangleMesh, Vertex_point_map, GeomTraits>(
+      tm, region_set, neighborhood(tm, region_set, (std::max)(options.neighborhood_rings, 2)), vpm,
+      lights, options);
 }
 } // namespace internal
 /// \endcond
@@ -104,11 +98,11 @@ desired_highlight_lines(const TriangleMesh& tm, const FaceRange& region,
                         std::size_t samples = 32,
                         const NamedParameters& np = CGAL::parameters::default_values())
 {
-  auto setup = internal::fairing_setup(tm, region, lights, np);
+  auto problem = internal::fairing_problem(tm, region, lights, np);
   Fairing_report report;
-  setup->make_targets(report);
+  problem.make_targets(report);
   samples = (std::max)(samples, std::size_t(2));
-  for (const auto& line : setup->desired_lines()) {
+  for (const auto& line : problem.desired_lines()) {
     std::vector<typename GeomTraits::Point_3> polyline;
     for (std::size_t i = 0; i < samples; ++i) {
       const auto p = line.curve.point_at_arc_length_fraction(double(i) / double(samples - 1));

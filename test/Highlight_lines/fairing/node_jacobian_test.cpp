@@ -14,7 +14,7 @@ using namespace test;
 namespace HL = CGAL::Highlight_lines;
 typedef boost::graph_traits<Surface_mesh>::face_descriptor face_descriptor;
 typedef boost::property_map<Surface_mesh, CGAL::vertex_point_t>::type Vpm;
-typedef HL::internal::Fairing<Surface_mesh, Vpm, K, HL::Active_set_box_QP_solver> Fairing;
+typedef HL::internal::Fairing_problem<Surface_mesh, Vpm, K> Fairing_problem;
 
 TEST(NodeJacobian, MatchesFiniteDifferences)
 {
@@ -37,18 +37,17 @@ TEST(NodeJacobian, MatchesFiniteDifferences)
       mesh, HL::internal::checked_region(mesh, region, get(CGAL::face_index, mesh)), 3);
   const Lights lights(Point(0.2, 0.1, 2.5), Vector(1, 0.3, 0), Vector(0, 0, 1), 0.05);
   HL::internal::Fairing_options options;
-  HL::Active_set_box_QP_solver solver;
   const Vpm vpm = get(CGAL::vertex_point, mesh);
-  Fairing fairing(mesh, region, neighborhood, vpm, lights, options, solver);
-  const auto& lm = fairing.engine().local_mesh();
-  const auto directions = fairing.movable_normals();
+  const Fairing_problem problem(mesh, region, neighborhood, vpm, lights, options);
+  const auto& lm = problem.engine().local_mesh();
+  const auto directions = problem.movable_normals();
 
-  // Recompute the model the Fairing object sees.
+  // Recompute the model the fairing problem sees.
   HL::internal::Model_engine<Surface_mesh, Vpm, CGAL::Sequential_tag> probe(
       mesh, vpm, HL::parameters::face_range(neighborhood));
   HL::internal::Raw_model model;
   probe.compute_raw(lights, HL::internal::Level_window(), false, model);
-  const HL::internal::Node_jacobian J = fairing.jacobian(directions);
+  const HL::internal::Node_jacobian J = problem.jacobian(directions);
 
   std::size_t compared = 0;
   double worst = 0, scale = 0;
@@ -57,7 +56,7 @@ TEST(NodeJacobian, MatchesFiniteDifferences)
     const auto row = J.node_row(node, lm.edge_vertices, model.levels, lights.spacing_value());
     // Every movable vertex within two rings of the node's carrier: those missing from the
     // analytic row must have a zero finite difference.
-    const auto& region = fairing.region();
+    const auto& region = problem.region();
     std::set<int> near;
     std::vector<int> carriers;
     if (node.vertex >= 0)
@@ -90,7 +89,7 @@ TEST(NodeJacobian, MatchesFiniteDifferences)
     }
     for (const auto& entry : entries) {
       const int var = entry.first;
-      const auto vd = lm.vertex_handles[std::size_t(fairing.region().movable[std::size_t(var)])];
+      const auto vd = lm.vertex_handles[std::size_t(problem.region().movable[std::size_t(var)])];
       const Point original = mesh.point(vd);
       auto node_position = [&](double x) {
         const auto& u = directions[std::size_t(var)];
