@@ -10,13 +10,15 @@
 #include <CGAL/Highlight_lines/Light_setup.h>
 #include <CGAL/Highlight_lines/parameters.h>
 #include <CGAL/Highlight_lines/internal/detection/anomaly_regions.h>
+#include <CGAL/Highlight_lines/internal/detection/detection_options.h>
 #include <CGAL/Highlight_lines/internal/detection/highlight_distance_field.h>
 #include <CGAL/Highlight_lines/internal/detection/light_planes.h>
 #include <CGAL/Highlight_lines/internal/detection/line_bending.h>
-#include <CGAL/Highlight_lines/internal/detection/line_peaks.h>
+#include <CGAL/Highlight_lines/internal/detection/line_scoring.h>
 #include <CGAL/Highlight_lines/internal/detection/mirror_symmetry.h>
 #include <CGAL/Highlight_lines/internal/detection/region_contrast.h>
 #include <CGAL/Highlight_lines/internal/detection/sharp_edge_vertices.h>
+#include <CGAL/Highlight_lines/internal/detection/surroundings_fit.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -33,181 +35,6 @@
 #include <vector>
 
 namespace CGAL {
-namespace Highlight_lines {
-namespace internal {
-
-struct Detection_options
-{
-  int orientations = 3;
-  int offsets = 2;
-  double scale = 3.0;     // w, in mean edge lengths
-  double threshold = 5.0; // robust z-score
-  double minimum_bending = 0.01;
-  double minimum_evidence = 0.5; // fraction of the light setups
-  int margin = 2;
-  double maximum_incidence_angle = 60; // degrees
-  double sharp_edge_angle = 60;        // degrees
-  bool all_sides = true;
-  bool local_residual = true; // false: the bending measure (closer to the paper)
-  int scales = 1;             // with local_residual: w, 2w, ...
-
-  template <typename NamedParameters>
-  explicit Detection_options(const NamedParameters& np)
-  {
-    using CGAL::parameters::choose_parameter;
-    using CGAL::parameters::get_parameter;
-    const double o = double(
-        choose_parameter(get_parameter(np, internal_np::number_of_orientations), orientations));
-    const double k =
-        double(choose_parameter(get_parameter(np, internal_np::number_of_offsets), offsets));
-    scale = double(choose_parameter(get_parameter(np, internal_np::detection_scale), scale));
-    threshold =
-        double(choose_parameter(get_parameter(np, internal_np::detection_threshold), threshold));
-    minimum_bending =
-        double(choose_parameter(get_parameter(np, internal_np::minimum_bending), minimum_bending));
-    minimum_evidence = double(
-        choose_parameter(get_parameter(np, internal_np::minimum_evidence), minimum_evidence));
-    const double m =
-        double(choose_parameter(get_parameter(np, internal_np::region_margin), margin));
-    all_sides = bool(choose_parameter(get_parameter(np, internal_np::all_sides), all_sides));
-    local_residual =
-        bool(choose_parameter(get_parameter(np, internal_np::local_residual), local_residual));
-    const double n =
-        double(choose_parameter(get_parameter(np, internal_np::number_of_scales), scales));
-    maximum_incidence_angle = double(choose_parameter(
-        get_parameter(np, internal_np::maximum_incidence_angle), maximum_incidence_angle));
-    auto require = [](bool ok, const char* what) {
-      if (!ok)
-        throw Invalid_input(Invalid_input::Problem::INVALID_PARAMETER, what);
-    };
-    require(o >= 1 && o <= 64, "number_of_orientations must be in [1, 64]");
-    require(k >= 1 && k <= 64, "number_of_offsets must be in [1, 64]");
-    require(scale >= 1 && scale <= 1000, "detection_scale must be in [1, 1000] mean edge lengths");
-    require(threshold > 0 && std::isfinite(threshold), "detection_threshold must be positive");
-    require(minimum_bending >= 0 && std::isfinite(minimum_bending),
-            "minimum_bending must be finite and not negative");
-    require(minimum_evidence > 0 && minimum_evidence <= 1, "minimum_evidence must be in (0, 1]");
-    require(m >= 0 && m <= 1000, "region_margin must be in [0, 1000] rings");
-    require(n >= 1 && n <= 4, "number_of_scales must be in [1, 4]");
-    require(maximum_incidence_angle > 0 && maximum_incidence_angle <= 90,
-            "maximum_incidence_angle must be in (0, 90] degrees");
-    orientations = int(o);
-    offsets = int(k);
-    margin = int(m);
-    scales = int(n);
-  }
-};
-
-// The quadric height field h(x, y) = c0 + c1 x + c2 y + c3 x^2 + c4 xy + c5 y^2 over the tangent
-// plane (normal `normal`) at the vertex `origin`, x and y in units of the region's radius (the
-// largest distance of a vertex of `region` from `origin`), fitted (least squares) to the
-// vertices of `region` farther than 60 % of that radius from `origin`: the smooth surface the
-// surroundings predict. Calls `inner(h - fit)` for each vertex nearer than that; returns the
-// fit at the origin, or the mean height of the outer vertices if the fit is singular (then
-// `inner` is not called), or 0 if there is nothing to fit.
-template <typename Local_mesh, typename Inner>
-double fit_surroundings(const Local_mesh& local, int origin, const vector3::Vec3& normal,
-                        const std::set<int>& region, Inner inner)
-{
-  using namespace vector3;
-  const double* pp = local.point(origin);
-  const Vec3 p{pp[0], pp[1], pp[2]};
-  Vec3 t = std::abs(normal[0]) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
-  t = t - dot(t, normal) * normal;
-  t = (1 / norm(t)) * t;
-  const Vec3 u = cross(normal, t);
-  double radius = 0;
-  for (int v : region) {
-    const double* q = local.point(v);
-    radius = (std::max)(radius, norm(Vec3{q[0], q[1], q[2]} - p));
-  }
-  if (!(radius > 0))
-    return 0;
-  auto coordinates = [&](int v) {
-    const double* q = local.point(v);
-    const Vec3 d = Vec3{q[0], q[1], q[2]} - p;
-    return std::array<double, 4>{dot(d, t) / radius, dot(d, u) / radius, dot(d, normal), norm(d)};
-  };
-  double m[6][7] = {};
-  double mean = 0;
-  std::size_t count = 0;
-  for (int v : region) {
-    const auto c = coordinates(v);
-    if (c[3] < 0.6 * radius)
-      continue;
-    const double x = c[0], y = c[1], h = c[2];
-    const double basis[6] = {1, x, y, x * x, x * y, y * y};
-    for (int i = 0; i < 6; ++i) {
-      for (int j = 0; j < 6; ++j)
-        m[i][j] += basis[i] * basis[j];
-      m[i][6] += basis[i] * h;
-    }
-    mean += h;
-    ++count;
-  }
-  if (count == 0)
-    return 0;
-  // Gauss-Jordan elimination with partial pivoting.
-  for (int c = 0; c < 6; ++c) {
-    int pivot = c;
-    for (int r = c + 1; r < 6; ++r)
-      if (std::abs(m[r][c]) > std::abs(m[pivot][c]))
-        pivot = r;
-    if (!(std::abs(m[pivot][c]) > 1e-12 * double(count)))
-      return mean / double(count);
-    for (int k = 0; k < 7; ++k)
-      std::swap(m[c][k], m[pivot][k]);
-    for (int r = 0; r < 6; ++r)
-      if (r != c) {
-        const double f = m[r][c] / m[c][c];
-        for (int k = 0; k < 7; ++k)
-          m[r][k] -= f * m[c][k];
-      }
-  }
-  double coefficient[6];
-  for (int i = 0; i < 6; ++i)
-    coefficient[i] = m[i][6] / m[i][i];
-  for (int v : region) {
-    const auto c = coordinates(v);
-    if (c[3] >= 0.6 * radius)
-      continue;
-    const double x = c[0], y = c[1];
-    inner(c[2] - (coefficient[0] + coefficient[1] * x + coefficient[2] * y +
-                  coefficient[3] * x * x + coefficient[4] * x * y + coefficient[5] * y * y));
-  }
-  return coefficient[0];
-}
-
-// Whether the vertex `peak` lies below (against `normal`) the quadric height field over its
-// tangent plane fitted to the vertices of `region` farther than 60 % of the region's radius
-// from it; the mean of those vertices if the fit is singular.
-template <typename Local_mesh>
-bool peak_lies_below_fit(const Local_mesh& local, int peak, const vector3::Vec3& normal,
-                         const std::set<int>& region)
-{
-  return fit_surroundings(local, peak, normal, region, [](double) {}) > 0;
-}
-
-// Whether the inner part of `region` (within 60 % of its radius from `centre`) lies below
-// (against `normal`) the quadric its outer part predicts: the sign of the inner vertex farthest
-// from the fit. A defect's centre moves most, wherever its strongest anomaly lies (for a wide
-// dent often on its flank, where the lines are displaced most, and where the surface can lie
-// on either side of a fit centred on it); a sum over the inner vertices would add up the
-// fit's own error over the whole neighbourhood.
-template <typename Local_mesh>
-bool region_lies_below_fit(const Local_mesh& local, int centre, const vector3::Vec3& normal,
-                           const std::set<int>& region)
-{
-  double farthest = 0;
-  const double at_centre = fit_surroundings(local, centre, normal, region, [&farthest](double h) {
-    if (std::abs(h) > std::abs(farthest))
-      farthest = h;
-  });
-  return farthest != 0 ? farthest < 0 : at_centre > 0;
-}
-
-} // namespace internal
-} // namespace Highlight_lines
 
 // One \cgalParam... command per line, as in CGAL's reference pages: not reflowed.
 // clang-format off
@@ -554,14 +381,6 @@ OutputIterator detect_highlight_line_irregularities(
       v = node.parameter < 0.5 ? source(node.halfedge, tm) : target(node.halfedge, tm);
     return compact_vertex(v);
   };
-  // The points of a highlight line, in doubles.
-  auto line_points = [](const auto& nodes, const auto& line, std::vector<Vec3>& polyline) {
-    polyline.clear();
-    for (std::size_t n : line.nodes) {
-      const auto& p = nodes[n].point;
-      polyline.push_back({CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
-    }
-  };
   double edge_sum = 0;
   std::size_t edge_count = 0;
   for (const auto& e : local.edge_vertices) {
@@ -596,6 +415,67 @@ OutputIterator detect_highlight_line_irregularities(
   std::vector<HL::Highlight_line_irregularity<TriangleMesh>> found;
   std::vector<std::vector<int>> found_faces;
   std::vector<int> found_centre; // with the local residual: the compact centre vertex
+  // What the sweeps of every scale read. Only the options that make sense for every setup of a
+  // sweep. An edge crossing more than max_levels_per_edge levels is dropped with its faces, as
+  // before the model's facing window: the scoring is tuned on it (with the facing window, the
+  // recall on the shared fandisk falls from 5 to 4 of 8 defects in
+  // Detection.FindsMostSmallDefectsAnywhereOnSharedCadMeshes).
+  const auto some_model_options = HL::parameters::facing_side_only(
+      HL::parameters::max_levels_per_edge(
+          choose_parameter(get_parameter(np, HL::internal_np::max_levels_per_edge), 256)),
+      choose_parameter(get_parameter(np, HL::internal_np::facing_side_only), true));
+  const CGAL::Named_function_parameters<bool, HL::internal_np::drop_faces_over_cap_t,
+                                        std::decay_t<decltype(some_model_options)>>
+      model_options(true, some_model_options);
+
+  const double pi = 3.14159265358979323846;
+  // Unit vertex normals (eq. 3), for the incidence test of the samples.
+  std::vector<Vec3> normals(static_cast<std::size_t>(nv));
+  for (int v = 0; v < nv; ++v) {
+    const auto n = sweeper.vertex_normals().unit_normal(v);
+    normals[std::size_t(v)] = Vec3{n[0], n[1], n[2]};
+  }
+  // The vertices of sharp edges: the lines kink there by design, so anomalies within one ring
+  // of them are not counted, and no region grows across one.
+  const std::vector<char> sharp =
+      HL::internal::sharp_edge_vertices(local, options.sharp_edge_angle);
+  std::vector<char> near_sharp = sharp;
+  HL::internal::grow_by_rings(adjacency, 1, near_sharp);
+  const double minimum_facing = std::cos(options.maximum_incidence_angle * pi / 180);
+  // Whether a highlight node lies on a sharp edge's vertex or on an edge with one: the line
+  // kinks there.
+  auto on_sharp_edge = [&](const auto& node) {
+    auto is_sharp = [&](vertex_descriptor v) {
+      const int compact = compact_vertex(v);
+      return compact >= 0 && sharp[std::size_t(compact)];
+    };
+    return node.is_on_vertex()
+               ? is_sharp(node.vertex)
+               : is_sharp(source(node.halfedge, tm)) || is_sharp(target(node.halfedge, tm));
+  };
+
+  // The light planes: `lights`, then (if all sides are looked at) the five other faces of a
+  // cube around the mesh, so that every face is scored by the setups of at least one plane.
+  const std::vector<HL::Light_setup<GeomTraits>> planes =
+      HL::internal::light_planes_around(lights, points, options.all_sides);
+  // How many setups score each vertex: those of the planes it faces within the incidence limit.
+  std::vector<std::size_t> scoring_setups(static_cast<std::size_t>(nv), 0);
+  for (const auto& plane : planes) {
+    const auto z = plane.plane_normal_array();
+    for (int v = 0; v < nv; ++v)
+      if (dot(normals[std::size_t(v)], Vec3{z[0], z[1], z[2]}) >= minimum_facing)
+        scoring_setups[std::size_t(v)] += std::size_t(options.orientations * options.offsets);
+  }
+
+  // Progress and cancellation (the `callback` named parameter).
+  constexpr bool has_callback =
+      !parameters::is_default_parameter<NamedParameters, internal_np::callback_t>::value;
+  const auto callback =
+      choose_parameter(get_parameter(np, internal_np::callback), [](double) { return true; });
+  const std::size_t total_setups =
+      planes.size() * std::size_t(options.orientations * options.offsets);
+  (void)total_setups;
+
   auto sweep_at_scale = [&](const double scale, const std::size_t pass,
                             const std::size_t passes) -> bool {
     HL::internal::Line_bending_scales scales;
@@ -605,92 +485,11 @@ OutputIterator detect_highlight_line_irregularities(
     HL::internal::Line_residual_scales residual_scales;
     residual_scales.step = scale * mean_edge / 4.0;
 
-    // Only the options that make sense for every setup of the sweep. An edge crossing more than
-    // max_levels_per_edge levels is dropped with its faces, as before the model's facing window:
-    // the scoring below is tuned on it (with the facing window, the recall on the shared fandisk
-    // falls from 5 to 4 of 8 defects in Detection.FindsMostSmallDefectsAnywhereOnSharedCadMeshes).
-    const auto some_model_options = HL::parameters::facing_side_only(
-        HL::parameters::max_levels_per_edge(
-            choose_parameter(get_parameter(np, HL::internal_np::max_levels_per_edge), 256)),
-        choose_parameter(get_parameter(np, HL::internal_np::facing_side_only), true));
-    const CGAL::Named_function_parameters<bool, HL::internal_np::drop_faces_over_cap_t,
-                                          std::decay_t<decltype(some_model_options)>>
-        model_options(true, some_model_options);
-
-    const double pi = 3.14159265358979323846;
-    // Unit vertex normals (eq. 3), for the incidence test of the samples.
-    std::vector<Vec3> normals(static_cast<std::size_t>(nv));
-    for (int v = 0; v < nv; ++v) {
-      const auto n = sweeper.vertex_normals().unit_normal(v);
-      normals[std::size_t(v)] = Vec3{n[0], n[1], n[2]};
-    }
-    // The vertices of sharp edges: the lines kink there by design, so anomalies within one ring
-    // of them are not counted, and no region grows across one.
-    const std::vector<char> sharp =
-        HL::internal::sharp_edge_vertices(local, options.sharp_edge_angle);
-    std::vector<char> near_sharp = sharp;
-    HL::internal::grow_by_rings(adjacency, 1, near_sharp);
-    const double minimum_facing = std::cos(options.maximum_incidence_angle * pi / 180);
-
-    // Only the peaks of the bending along a line count (one per stencil width w): the stencil
-    // spreads a defect's response over 3w/2 to either side, the peak stays on the defect.
-    const std::ptrdiff_t peak_window =
-        options.local_residual ? std::ptrdiff_t(residual_scales.gap) : scales.fine_samples;
-    auto is_local_maximum = [peak_window](const std::vector<double>& values, std::size_t i,
-                                          bool closed) {
-      return HL::internal::is_peak_along_line(values, i, closed, peak_window);
-    };
-
-    std::vector<HL::internal::Anomaly> anomalies;
-    std::size_t line_id = 0, setup_id = 0;
-    // A peak of the current line and setup becomes an anomaly unless it lies next to a sharp
-    // edge; the new anomaly, or null.
-    auto add_anomaly = [&](int vertex, double score, double bending) -> HL::internal::Anomaly* {
-      if (near_sharp[std::size_t(vertex)])
-        return nullptr;
-      HL::internal::Anomaly a;
-      a.vertex = vertex;
-      a.line = line_id;
-      a.setup = setup_id;
-      a.score = score;
-      a.bending = bending;
-      anomalies.push_back(a);
-      return &anomalies.back();
-    };
-    std::vector<Vec3> polyline;
-    std::vector<std::vector<int>> sample_vertices;
-    std::vector<HL::internal::Line_bending> bendings;
-    std::vector<HL::internal::Line_residual> residuals;
-    std::vector<char> line_breaks;
-    std::vector<double> setup_deviations; // per setup: the noise of its level residuals
-    double line_noise_floor = 0.25;
-    std::vector<std::vector<double>> level_residuals;
-    // With the local residual: every scored sample (vertex, setup, level residual less the
-    // setup's median).
-    std::vector<HL::internal::Scored_sample> samples;
+    // The lines of every setup, scored (line_scoring.h).
+    HL::internal::Line_scoring scoring(normals, near_sharp, minimum_facing, mean_edge,
+                                       options.minimum_bending);
+    std::size_t setup_id = 0;
     HL::internal::Highlight_distance_field field; // with the local residual, per orientation
-    // The light planes: `lights`, then (if all sides are looked at) the five other faces of a
-    // cube around the mesh, so that every face is scored by the setups of at least one plane.
-    const std::vector<HL::Light_setup<GeomTraits>> planes =
-        HL::internal::light_planes_around(lights, points, options.all_sides);
-    // How many setups score each vertex: those of the planes it faces within the incidence limit.
-    std::vector<std::size_t> scoring_setups(static_cast<std::size_t>(nv), 0);
-    for (const auto& plane : planes) {
-      const auto z = plane.plane_normal_array();
-      for (int v = 0; v < nv; ++v)
-        if (dot(normals[std::size_t(v)], Vec3{z[0], z[1], z[2]}) >= minimum_facing)
-          scoring_setups[std::size_t(v)] += std::size_t(options.orientations * options.offsets);
-    }
-
-    // Progress and cancellation (the `callback` named parameter).
-    constexpr bool has_callback =
-        !parameters::is_default_parameter<NamedParameters, internal_np::callback_t>::value;
-    const auto callback =
-        choose_parameter(get_parameter(np, internal_np::callback), [](double) { return true; });
-    const std::size_t total_setups =
-        planes.size() * std::size_t(options.orientations * options.offsets);
-    (void)total_setups;
-
     for (const auto& plane : planes)
       for (int o = 0; o < options.orientations; ++o) {
         HL::Light_setup<GeomTraits> turned =
@@ -709,158 +508,22 @@ OutputIterator detect_highlight_line_irregularities(
               k == 0 ? turned
                      : turned.translated(across * (turned.spacing() * k / options.offsets));
           const auto model = sweeper.compute(shifted, model_options);
-          const auto& nodes = model.nodes();
-          const auto& lines = model.lines();
-
-          if (options.local_residual) {
-            const auto z = shifted.plane_normal_array();
-            // The gradient of the levels: that of the distance over the spacing of this setup.
-            const double level_per_distance = 1 / shifted.spacing_value();
-            residuals.resize(lines.size());
-            level_residuals.resize(lines.size());
-            sample_vertices.resize(lines.size());
-            std::vector<double> pooled;
-            for (std::size_t l = 0; l < lines.size(); ++l) {
-              line_points(nodes, lines[l], polyline);
-              line_breaks.clear();
-              for (std::size_t n : lines[l].nodes) {
-                const auto& node = nodes[n];
-                // A node on a sharp edge's vertex or on an edge with one: the line kinks there.
-                bool on_feature = false;
-                auto check = [&](vertex_descriptor v) {
-                  const int compact = compact_vertex(v);
-                  on_feature = on_feature || (compact >= 0 && sharp[std::size_t(compact)]);
-                };
-                if (node.is_on_vertex())
-                  check(node.vertex);
-                else {
-                  check(source(node.halfedge, tm));
-                  check(target(node.halfedge, tm));
-                }
-                line_breaks.push_back(on_feature ? 1 : 0);
-              }
-              HL::internal::compute_line_residual(polyline, lines[l].is_closed, residual_scales,
-                                                  residuals[l], line_breaks);
-              // Each sample's mesh vertex; samples where the surface turns too far away from the
-              // lights are not scored.
-              const auto& residual = residuals[l];
-              std::vector<double>& level = level_residuals[l];
-              level.assign(residual.valid.size(), std::numeric_limits<double>::quiet_NaN());
-              sample_vertices[l].assign(residual.valid.size(), -1);
-              for (std::size_t i = 0; i < residual.valid.size(); ++i) {
-                if (!residual.valid[i])
-                  continue;
-                const int compact =
-                    nearest_compact_vertex(nodes[lines[l].nodes[residual.nearest_vertex[i]]]);
-                if (compact < 0 ||
-                    dot(normals[std::size_t(compact)], Vec3{z[0], z[1], z[2]}) < minimum_facing ||
-                    !(field.weight[std::size_t(compact)] > 0))
-                  continue;
-                sample_vertices[l][i] = compact;
-                level[i] = level_per_distance *
-                           dot(residual.residual[i], field.gradient[std::size_t(compact)]);
-                if (std::isfinite(level[i]))
-                  pooled.push_back(level[i]);
-                else
-                  sample_vertices[l][i] = -1;
-              }
-            }
-            // The noise: median and robust deviation of the level residuals of the whole setup.
-            const HL::internal::Robust_statistics stats =
-                HL::internal::robust_statistics_signed(pooled);
-            setup_deviations.push_back(stats.count >= 32 ? stats.deviation : -1.0);
-            // Every scored sample, for the noise of the surroundings of a region (below).
-            for (std::size_t l = 0; l < lines.size(); ++l)
-              for (std::size_t i = 0; i < level_residuals[l].size(); ++i)
-                if (sample_vertices[l][i] >= 0)
-                  samples.push_back({sample_vertices[l][i], setup_id,
-                                     float(level_residuals[l][i] - stats.median)});
-
-            // The candidates: the peaks of |level residual - median| along each line (one per
-            // `gap` samples to either side), scored below once the noise of every setup is known.
-            std::vector<double> magnitude;
-            for (std::size_t l = 0; l < lines.size(); ++l, ++line_id) {
-              const auto& level = level_residuals[l];
-              magnitude.assign(level.size(), -1.0);
-              for (std::size_t i = 0; i < level.size(); ++i)
-                if (sample_vertices[l][i] >= 0)
-                  magnitude[i] = std::abs(level[i] - stats.median);
-              // The line's own noise, if it has samples enough to tell.
-              std::vector<double> own;
-              for (std::size_t i = 0; i < level.size(); ++i)
-                if (sample_vertices[l][i] >= 0)
-                  own.push_back(level[i]);
-              const HL::internal::Robust_statistics line_stats =
-                  HL::internal::robust_statistics_signed(own);
-              const double line_noise = line_stats.count >= 32 ? line_stats.deviation : -1.0;
-              for (std::size_t i = 0; i < level.size(); ++i) {
-                if (sample_vertices[l][i] < 0 || !(magnitude[i] > 0))
-                  continue;
-                const double shift = norm(residuals[l].residual[i]) / mean_edge;
-                if (!(shift > options.minimum_bending) ||
-                    !is_local_maximum(magnitude, i, lines[l].is_closed))
-                  continue;
-                HL::internal::Anomaly* a = add_anomaly(sample_vertices[l][i], magnitude[i], shift);
-                if (a) {
-                  a->noise = line_noise;
-                  a->value = level[i] - stats.median;
-                }
-              }
-            }
-          } else {
-            bendings.resize(lines.size());
-            sample_vertices.resize(lines.size());
-            const auto z = shifted.plane_normal_array();
-            std::vector<double> pooled;
-            for (std::size_t l = 0; l < lines.size(); ++l) {
-              line_points(nodes, lines[l], polyline);
-              HL::internal::compute_line_bending(polyline, lines[l].is_closed, scales, bendings[l]);
-              // Each sample's mesh vertex; samples where the surface turns too far away from the
-              // lights are not scored.
-              std::vector<double>& bending = bendings[l].bending;
-              sample_vertices[l].assign(bending.size(), -1);
-              for (std::size_t i = 0; i < bending.size(); ++i) {
-                if (bending[i] < 0)
-                  continue;
-                const int compact =
-                    nearest_compact_vertex(nodes[lines[l].nodes[bendings[l].nearest_vertex[i]]]);
-                if (compact < 0 ||
-                    dot(normals[std::size_t(compact)], Vec3{z[0], z[1], z[2]}) < minimum_facing) {
-                  bending[i] = -1;
-                  continue;
-                }
-                sample_vertices[l][i] = compact;
-                pooled.push_back(bending[i]);
-              }
-            }
-            const HL::internal::Robust_statistics setup_stats =
-                HL::internal::robust_statistics(pooled);
-
-            for (std::size_t l = 0; l < lines.size(); ++l, ++line_id) {
-              HL::internal::Robust_statistics stats =
-                  HL::internal::robust_statistics(bendings[l].bending);
-              if (stats.count < 32)
-                stats = setup_stats;
-              const double deviation = (std::max)({stats.deviation, 0.25 * setup_stats.deviation,
-                                                   1e-3 * options.minimum_bending, 1e-300});
-              const auto& bending = bendings[l].bending;
-              for (std::size_t i = 0; i < bending.size(); ++i) {
-                if (bending[i] < 0 || !(bending[i] > options.minimum_bending))
-                  continue;
-                const double score = (bending[i] - stats.median) / deviation;
-                if (!(score > options.threshold) ||
-                    !is_local_maximum(bending, i, lines[l].is_closed))
-                  continue;
-                add_anomaly(sample_vertices[l][i], score, bending[i]);
-              }
-            }
-          }
+          if (options.local_residual)
+            scoring.score_level_residuals(model.nodes(), model.lines(),
+                                          shifted.plane_normal_array(), 1 / shifted.spacing_value(),
+                                          field, residual_scales, setup_id, nearest_compact_vertex,
+                                          on_sharp_edge);
+          else
+            scoring.score_bending(model.nodes(), model.lines(), shifted.plane_normal_array(),
+                                  scales, options.threshold, setup_id, nearest_compact_vertex);
           if constexpr (has_callback)
             if (!callback((double(pass) + double(setup_id + 1) / double(total_setups)) /
                           double(passes)))
               return false; // cancelled: no region
         }
       }
+    std::vector<HL::internal::Anomaly>& anomalies = scoring.anomalies;
+    std::vector<HL::internal::Scored_sample>& samples = scoring.samples;
 
     // The peak against the smooth surface its surroundings predict: a quadric height field over
     // the peak's tangent plane, fitted (least squares) to the region's outer vertices (beyond
@@ -876,63 +539,10 @@ OutputIterator detect_highlight_line_irregularities(
                  : HL::Irregularity_kind::BUMP;
     };
     if (options.local_residual) {
-      // The noise of each setup, floored at half the median over the setups (a setup that only
-      // sees planes has next to none, and would make any rounding an anomaly).
-      {
-        std::vector<double> known;
-        for (double d : setup_deviations)
-          if (d > 0)
-            known.push_back(d);
-        double floor = 1e-300;
-        if (!known.empty()) {
-          std::nth_element(known.begin(), known.begin() + std::ptrdiff_t(known.size() / 2),
-                           known.end());
-          floor = (std::max)(floor, 0.5 * known[known.size() / 2]);
-        }
-        std::size_t kept = 0;
-        for (std::size_t i = 0; i < anomalies.size(); ++i) {
-          HL::internal::Anomaly a = anomalies[i];
-          const double setup_noise = (std::max)(setup_deviations[a.setup], floor);
-          a.score /=
-              a.noise >= 0 ? (std::max)(a.noise, line_noise_floor * setup_noise) : setup_noise;
-          if (!(a.score > options.threshold))
-            continue;
-          anomalies[kept++] = a;
-        }
-        anomalies.resize(kept);
-      }
-
-      // The setups that can see a defect at a vertex: those facing it within the incidence limit
-      // that scored a sample within `w` of it (`detection_scale` rings, not across a sharp edge).
-      // Facing is not enough: a setup's lines are not scored near their ends, near a sharp edge
-      // or where its lights cross the surface at a grazing angle, and a defect there cannot show
-      // in it (on the shared Spot, this located 7 of 8 defects 0.2 ē high instead of 4).
-      std::vector<std::size_t> seeing_setups(static_cast<std::size_t>(nv), 0);
-      {
-        const std::size_t words = (setup_id + 63) / 64;
-        std::vector<std::uint64_t> mask(std::size_t(nv) * words, 0), next;
-        for (const auto& sample : samples)
-          mask[std::size_t(sample.vertex) * words + sample.setup / 64] |= std::uint64_t(1)
-                                                                          << (sample.setup % 64);
-        const int rings = (std::max)(1, int(std::ceil(scale)));
-        for (int r = 0; r < rings; ++r) {
-          next = mask;
-          for (int v = 0; v < nv; ++v)
-            if (!sharp[std::size_t(v)])
-              adjacency.for_each_neighbour(v, [&](int u) {
-                for (std::size_t k = 0; k < words; ++k)
-                  next[std::size_t(u) * words + k] |= mask[std::size_t(v) * words + k];
-              });
-          mask.swap(next);
-        }
-        for (int v = 0; v < nv; ++v) {
-          std::size_t count = 0;
-          for (std::size_t k = 0; k < words; ++k)
-            for (std::uint64_t m = mask[std::size_t(v) * words + k]; m != 0; m &= m - 1)
-              ++count;
-          seeing_setups[std::size_t(v)] = (std::min)(count, scoring_setups[std::size_t(v)]);
-        }
-      }
+      scoring.divide_by_noise(options.threshold);
+      const std::vector<std::size_t> seeing_setups = HL::internal::setups_seeing_vertices(
+          samples, setup_id, adjacency, sharp, (std::max)(1, int(std::ceil(scale))),
+          scoring_setups);
       // A region must show in a share `minimum_evidence` of the setups that can see it.
       std::vector<std::size_t> minimum_setups(static_cast<std::size_t>(nv));
       for (int v = 0; v < nv; ++v)
