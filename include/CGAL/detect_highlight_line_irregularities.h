@@ -17,8 +17,9 @@
 #include <CGAL/Highlight_lines/internal/detection/line_scoring.h>
 #include <CGAL/Highlight_lines/internal/detection/mirror_symmetry.h>
 #include <CGAL/Highlight_lines/internal/detection/region_contrast.h>
+#include <CGAL/Highlight_lines/internal/detection/regions_across_scales.h>
 #include <CGAL/Highlight_lines/internal/detection/sharp_edge_vertices.h>
-#include <CGAL/Highlight_lines/internal/detection/surroundings_fit.h>
+#include <CGAL/Highlight_lines/internal/detection/region_assessment.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -525,31 +526,14 @@ OutputIterator detect_highlight_line_irregularities(
     std::vector<HL::internal::Anomaly>& anomalies = scoring.anomalies;
     std::vector<HL::internal::Scored_sample>& samples = scoring.samples;
 
-    // The peak against the smooth surface its surroundings predict: a quadric height field over
-    // the peak's tangent plane, fitted (least squares) to the region's outer vertices (beyond
-    // 60 % of the region's radius from the peak).
-    auto dent_or_bump = [&](int peak, const std::vector<int>& faces) {
-      std::set<int> region_vertices;
-      for (int f : faces)
-        for (int v : corners[std::size_t(f)])
-          region_vertices.insert(v);
-      return HL::internal::peak_lies_below_fit(local, peak, normals[std::size_t(peak)],
-                                               region_vertices)
-                 ? HL::Irregularity_kind::DENT
-                 : HL::Irregularity_kind::BUMP;
-    };
     if (options.local_residual) {
       scoring.divide_by_noise(options.threshold);
       const std::vector<std::size_t> seeing_setups = HL::internal::setups_seeing_vertices(
           samples, setup_id, adjacency, sharp, (std::max)(1, int(std::ceil(scale))),
           scoring_setups);
       // A region must show in a share `minimum_evidence` of the setups that can see it.
-      std::vector<std::size_t> minimum_setups(static_cast<std::size_t>(nv));
-      for (int v = 0; v < nv; ++v)
-        minimum_setups[std::size_t(v)] = (std::max)(
-            std::size_t(1),
-            std::size_t(std::ceil(options.minimum_evidence * double(seeing_setups[std::size_t(v)]) -
-                                  1e-9)));
+      const std::vector<std::size_t> minimum_setups =
+          HL::internal::required_setups(seeing_setups, options.minimum_evidence);
       const double w = scale * mean_edge;
       // A defect of radius R <= 3w/2 displaces the lines within R of its centre: its anomalies lie
       // in a disc of radius 2w. What the surroundings show is read up to three times as far.
@@ -666,14 +650,11 @@ OutputIterator detect_highlight_line_irregularities(
           if (strongest_asymmetric != std::size_t(-1))
             axes = asymmetric_shape[asymmetric_cluster_of[strongest_asymmetric]];
         }
-        const double length = 4 * axes[0], width = (std::max)(4 * axes[1], w);
-        const double slenderness =
-            (std::min)(1.0, std::pow(2 * width / (std::max)(length, 1e-300), 2));
-        const double extent = (std::min)(1.0, std::pow(11 * w / (std::max)(length, 1e-300), 2));
+        const HL::internal::Anomaly_shape shape = HL::internal::anomaly_shape(axes, w, 11 * w);
         const double seeing =
             double((std::max)(std::size_t(1), scoring_setups[std::size_t(region.centre)]));
         irregularity.confidence =
-            (std::min)(1.0, double(region.setups) / seeing) * slenderness * extent;
+            (std::min)(1.0, double(region.setups) / seeing) * shape.slenderness * shape.locality;
         // Design is symmetric: on a mirror symmetric surface, a region whose surface has its
         // mirror image (up to the surface's own asymmetry) is design, however round and
         // isolated; a defect moves its surface by its height away from its mirror image.
@@ -688,37 +669,11 @@ OutputIterator detect_highlight_line_irregularities(
             }
           irregularity.confidence *= (std::min)(1.0, std::pow(asymmetry / mirror->tolerance(), 2));
         }
-        if (slenderness < 1) {
-          irregularity.kind = HL::Irregularity_kind::ELONGATED;
-        } else if (extent < 1) {
-          irregularity.kind = HL::Irregularity_kind::EXTENDED;
-        } else {
-          // Over twice the region's reach (vertices reached along edges, not across a sharp
-          // edge): the surroundings the fit reads then lie beyond a defect that fills the
-          // region, which a wide dent often does at the finer scale.
-          const Vec3& at = points[std::size_t(region.centre)];
-          double reach = 0;
-          for (int f : region.faces)
-            for (int v : corners[std::size_t(f)])
-              reach = (std::max)(reach, norm(points[std::size_t(v)] - at));
-          std::set<int> neighbourhood{region.centre};
-          std::vector<int> front{region.centre};
-          while (!front.empty()) {
-            const int v = front.back();
-            front.pop_back();
-            if (sharp[std::size_t(v)] && v != region.centre)
-              continue;
-            adjacency.for_each_neighbour(v, [&](int u) {
-              if (norm(points[std::size_t(u)] - at) <= 2 * reach && neighbourhood.insert(u).second)
-                front.push_back(u);
-            });
-          }
-          irregularity.kind =
-              HL::internal::region_lies_below_fit(
-                  local, region.centre, normals[std::size_t(region.centre)], neighbourhood)
-                  ? HL::Irregularity_kind::DENT
-                  : HL::Irregularity_kind::BUMP;
-        }
+        irregularity.kind = HL::internal::kind_of_region(shape, [&] {
+          return HL::internal::dent_or_bump_around_centre(local, points, corners, adjacency, sharp,
+                                                          region.faces, region.centre,
+                                                          normals[std::size_t(region.centre)]);
+        });
         irregularity.scale = scale;
         found.push_back(std::move(irregularity));
         found_faces.push_back(region.faces);
@@ -726,13 +681,9 @@ OutputIterator detect_highlight_line_irregularities(
       }
     } else {
       const int join_rings = (std::max)(1, int(std::ceil(scale)));
-      // A region must show in a share `minimum_evidence` of the setups that can see it.
-      std::vector<std::size_t> minimum_setups(static_cast<std::size_t>(nv));
-      for (int v = 0; v < nv; ++v)
-        minimum_setups[std::size_t(v)] = (std::max)(
-            std::size_t(1),
-            std::size_t(std::ceil(
-                options.minimum_evidence * double(scoring_setups[std::size_t(v)]) - 1e-9)));
+      // A region must show in a share `minimum_evidence` of the setups that face it.
+      const std::vector<std::size_t> minimum_setups =
+          HL::internal::required_setups(scoring_setups, options.minimum_evidence);
       const auto regions = HL::internal::group_anomalies(corners, nv, anomalies, join_rings,
                                                          options.margin, minimum_setups, sharp);
       for (const auto& region : regions) {
@@ -764,23 +715,16 @@ OutputIterator detect_highlight_line_irregularities(
           anomaly_vertices.insert(anomalies[i].vertex);
         const auto axes = HL::internal::spreads_of_vertices(points, anomaly_vertices);
         const double w = scale * mean_edge;
-        const double length = 4 * axes[0], width = (std::max)(4 * axes[1], w);
         // A defect is local: the response to one of radius R spreads over R + 3w/2 from its
         // centre, so a defect up to the detection's scale (R <= 3w/2) spreads its anomalies over
         // a length of at most 6w. Larger or longer regions are shape at another scale: design.
-        const double slenderness =
-            (std::min)(1.0, std::pow(2 * width / (std::max)(length, 1e-300), 2));
-        const double locality = (std::min)(1.0, std::pow(6 * w / (std::max)(length, 1e-300), 2));
+        const HL::internal::Anomaly_shape shape = HL::internal::anomaly_shape(axes, w, 6 * w);
         std::size_t seeing = 1;
         for (std::size_t i : region.anomalies)
           seeing = (std::max)(seeing, scoring_setups[std::size_t(anomalies[i].vertex)]);
-        irregularity.confidence =
-            (std::min)(1.0, double(setups_seen.size()) / double(seeing)) * slenderness * locality;
-        if (slenderness < 1) {
-          irregularity.kind = HL::Irregularity_kind::ELONGATED;
-        } else if (locality < 1) {
-          irregularity.kind = HL::Irregularity_kind::EXTENDED;
-        } else {
+        irregularity.confidence = (std::min)(1.0, double(setups_seen.size()) / double(seeing)) *
+                                  shape.slenderness * shape.locality;
+        irregularity.kind = HL::internal::kind_of_region(shape, [&] {
           int peak = 0; // the strongest anomaly's vertex
           double best = -1;
           for (std::size_t i : region.anomalies)
@@ -788,8 +732,9 @@ OutputIterator detect_highlight_line_irregularities(
               best = anomalies[i].score;
               peak = anomalies[i].vertex;
             }
-          irregularity.kind = dent_or_bump(peak, region.faces);
-        }
+          return HL::internal::dent_or_bump_at_peak(local, corners, region.faces, peak,
+                                                    normals[std::size_t(peak)]);
+        });
         irregularity.scale = scale;
         found.push_back(std::move(irregularity));
         found_faces.push_back(region.faces);
@@ -798,67 +743,25 @@ OutputIterator detect_highlight_line_irregularities(
     return true;
   };
 
-  auto stronger = [&found](std::size_t a, std::size_t b) {
-    return found[a].confidence * found[a].score > found[b].confidence * found[b].score;
-  };
-  std::vector<std::size_t> order;
-  if (!options.local_residual) {
-    if (!sweep_at_scale(options.scale, 0, 1))
+  // The bending measure sweeps once. The local residual at scale w sees defects of radius up to
+  // 3w/2 (wider ones move the lines over the fit's window too, and are partly absorbed into the
+  // prediction), so its sweep can be repeated at 2w, 4w, ... (`number_of_scales`); the lines of
+  // each are twice as far apart as those of the one before, so it costs about half as much. A
+  // region keeps its best scale: the strongest region first, then every region that shares no
+  // face with a stronger one.
+  const std::size_t passes = options.local_residual ? std::size_t(options.scales) : 1;
+  for (std::size_t pass = 0; pass < passes; ++pass)
+    if (!sweep_at_scale(options.scale * double(std::size_t(1) << pass), pass, passes))
       return out; // cancelled: no region
-    for (std::size_t i = 0; i < found.size(); ++i)
-      order.push_back(i);
-    std::stable_sort(order.begin(), order.end(), stronger);
-  } else {
-    // Several scales (`number_of_scales`): the residual at scale w sees defects of radius up
-    // to 3w/2 (wider ones move the lines over the fit's window too, and are partly absorbed
-    // into the prediction), so the sweep can be repeated at 2w, 4w, ...; the lines of each are
-    // twice as far apart as those of the one before, so it costs about half as much. A region
-    // keeps its best scale: the strongest region first, then every region that shares no face
-    // with a stronger one.
-    const std::size_t passes = std::size_t(options.scales);
-    for (std::size_t pass = 0; pass < passes; ++pass)
-      if (!sweep_at_scale(options.scale * double(std::size_t(1) << pass), pass, passes))
-        return out; // cancelled: no region
-    std::vector<std::size_t> all(found.size());
-    for (std::size_t i = 0; i < found.size(); ++i)
-      all[i] = i;
-    std::stable_sort(all.begin(), all.end(), stronger);
-    // A region found at a coarser scale takes the faces (and the peak) of the strongest region
-    // of a finer scale centred in it: the finer scale places a defect more precisely and its
-    // region is sized to it (about 2w + margin in radius), the coarser one, with less noise
-    // and a fit that reaches beyond wide defects, says how strong and how local it is.
-    std::vector<char> taken(nf, 0), used(found.size(), 0), in_region(std::size_t(nv), 0);
-    for (std::size_t i : all) {
-      if (used[i])
-        continue;
-      std::size_t faces_of = i;
-      for (int f : found_faces[i])
-        for (int v : corners[std::size_t(f)])
-          in_region[std::size_t(v)] = 1;
-      for (std::size_t j : all)
-        if (!used[j] && found[j].scale < found[i].scale &&
-            in_region[std::size_t(found_centre[j])]) {
-          faces_of = j;
-          break;
-        }
-      for (int f : found_faces[i])
-        for (int v : corners[std::size_t(f)])
-          in_region[std::size_t(v)] = 0;
-      bool overlaps = false;
-      for (int f : found_faces[faces_of])
-        overlaps = overlaps || taken[std::size_t(f)];
-      if (overlaps)
-        continue;
-      for (int f : found_faces[faces_of])
-        taken[std::size_t(f)] = 1;
-      used[i] = used[faces_of] = 1;
-      if (faces_of != i) {
-        found[i].faces = found[faces_of].faces;
-        found[i].peak_vertex = found[faces_of].peak_vertex;
-      }
-      order.push_back(i);
-    }
-  }
+  std::vector<std::size_t> order(found.size());
+  for (std::size_t i = 0; i < found.size(); ++i)
+    order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&found](std::size_t a, std::size_t b) {
+    return found[a].confidence * found[a].score > found[b].confidence * found[b].score;
+  });
+  if (options.local_residual)
+    order = HL::internal::select_regions_across_scales(found, found_faces, found_centre, order,
+                                                       corners, std::size_t(nv));
   for (std::size_t i : order)
     *out++ = std::move(found[i]);
   return out;

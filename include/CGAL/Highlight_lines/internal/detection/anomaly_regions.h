@@ -193,6 +193,18 @@ inline std::vector<Anomaly_region> group_anomalies(const std::vector<std::array<
                          std::vector<std::size_t>(std::size_t(number_of_vertices), minimum_setups));
 }
 
+// The number of light setups a region must show in at each vertex: a share `minimum_evidence`
+// of the `seeing` setups that can see it there, at least one.
+inline std::vector<std::size_t> required_setups(const std::vector<std::size_t>& seeing,
+                                                double minimum_evidence)
+{
+  std::vector<std::size_t> required(seeing.size());
+  for (std::size_t v = 0; v < seeing.size(); ++v)
+    required[v] = (std::max)(std::size_t(1),
+                             std::size_t(std::ceil(minimum_evidence * double(seeing[v]) - 1e-9)));
+  return required;
+}
+
 // A region around a peak of the anomalies (group_anomalies_around_peaks()).
 struct Peak_region
 {
