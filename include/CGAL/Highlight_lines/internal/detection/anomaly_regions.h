@@ -128,6 +128,25 @@ inline int label_components(const Vertex_adjacency& adjacency, const std::vector
   return components;
 }
 
+// Adds each face to the region of one of its vertices (`owner`, -1 for none), of a vertex off
+// the barrier if it has one: a region reaches a sharp edge's vertices, never the other side.
+template <typename Region>
+void add_faces_to_regions(const std::vector<std::array<int, 3>>& faces,
+                          const std::vector<int>& owner, const std::vector<char>& barrier,
+                          std::vector<Region>& regions)
+{
+  auto on_barrier = [&](int v) { return !barrier.empty() && barrier[std::size_t(v)]; };
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    int chosen = -1;
+    for (int pass = 0; pass < 2 && chosen < 0; ++pass)
+      for (int v : faces[f])
+        if (chosen < 0 && owner[std::size_t(v)] >= 0 && (pass == 1 || !on_barrier(v)))
+          chosen = owner[std::size_t(v)];
+    if (chosen >= 0)
+      regions[std::size_t(chosen)].faces.push_back(int(f));
+  }
+}
+
 // Groups anomalies into disjoint face regions:
 // 1. anomalies closer than `join_rings` edges belong to one cluster;
 // 2. a cluster seen in fewer light setups than the largest `minimum_setups[v]` of its
@@ -167,16 +186,7 @@ inline std::vector<Anomaly_region> group_anomalies(const std::vector<std::array<
   const int components = label_components(adjacency, inside, label, barrier);
 
   std::vector<Anomaly_region> regions(static_cast<std::size_t>(components));
-  auto on_barrier = [&](int v) { return !barrier.empty() && barrier[std::size_t(v)]; };
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    int chosen = -1;
-    for (int pass = 0; pass < 2 && chosen < 0; ++pass)
-      for (int v : faces[f])
-        if (chosen < 0 && label[std::size_t(v)] >= 0 && (pass == 1 || !on_barrier(v)))
-          chosen = label[std::size_t(v)];
-    if (chosen >= 0)
-      regions[std::size_t(chosen)].faces.push_back(int(f));
-  }
+  add_faces_to_regions(faces, label, barrier, regions);
   for (std::size_t i = 0; i < anomalies.size(); ++i)
     if (label[std::size_t(anomalies[i].vertex)] >= 0)
       regions[std::size_t(label[std::size_t(anomalies[i].vertex)])].anomalies.push_back(i);
@@ -421,17 +431,7 @@ inline std::vector<Peak_region> group_anomalies_around_peaks(
     }
     regions.push_back(std::move(region));
   }
-  // Faces: to the region of a vertex off the barrier if there is one.
-  auto on_barrier = [&](int v) { return !barrier.empty() && barrier[std::size_t(v)]; };
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    int chosen = -1;
-    for (int pass = 0; pass < 2 && chosen < 0; ++pass)
-      for (int v : faces[f])
-        if (chosen < 0 && owner[std::size_t(v)] >= 0 && (pass == 1 || !on_barrier(v)))
-          chosen = owner[std::size_t(v)];
-    if (chosen >= 0)
-      regions[std::size_t(chosen)].faces.push_back(int(f));
-  }
+  add_faces_to_regions(faces, owner, barrier, regions);
   return regions;
 }
 
