@@ -45,6 +45,10 @@ const char* usage =
     "options:\n"
     "  --out PREFIX        output prefix (default: irregularities)\n"
     "  --lines N           about N lights across the surface (default 30)\n"
+    "  --base X Y Z        a point of the base light A0     } all four give the light\n"
+    "  --direction X Y Z   the direction H of the lights    } setup explicitly (the first\n"
+    "  --normal X Y Z      the normal Z of the light plane  } plane of the sweep); H must be\n"
+    "  --spacing S         the distance between lights      } perpendicular to Z\n"
     "  --orientations N    light directions in the sweep (default 3)\n"
     "  --offsets N         shifts of the lights per direction (default 2)\n"
     "  --scale W           scale of the measure, in mean edge lengths (default 3)\n"
@@ -55,8 +59,8 @@ const char* usage =
     "  --size W H          picture size in pixels (default 1600 1000)\n"
     "  --help              this text\n";
 
-using command_line::fail;
 using command_line::number;
+using command_line::word;
 
 struct Options
 {
@@ -65,43 +69,37 @@ struct Options
   int lines = 30, orientations = 3, offsets = 2;
   double scale = 3, threshold = 5;
   bool local_residual = true;
-  int width = 1600, height = 1000;
+  command_line::Light_options lights;
+  command_line::Picture_size size{1600, 1000};
 };
 
 Options parse(int argc, char** argv)
 {
   Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--help" || a == "-h") {
-      std::cout << usage;
-      std::exit(0);
-    } else if (a == "--out") {
-      if (++i >= argc)
-        fail("missing value after --out");
-      o.out = argv[i];
-    } else if (a == "--lines")
-      o.lines = int(number(i, argc, argv));
-    else if (a == "--orientations")
-      o.orientations = int(number(i, argc, argv));
-    else if (a == "--offsets")
-      o.offsets = int(number(i, argc, argv));
-    else if (a == "--scale")
-      o.scale = number(i, argc, argv);
-    else if (a == "--threshold")
-      o.threshold = number(i, argc, argv);
-    else if (a == "--bending")
-      o.local_residual = false;
-    else if (a == "--size") {
-      o.width = int(number(i, argc, argv));
-      o.height = int(number(i, argc, argv));
-    } else if (!a.empty() && a[0] == '-')
-      fail("unknown option " + a);
-    else
-      o.mesh = a;
-  }
-  if (o.width < 16 || o.height < 16 || o.width > 10000 || o.height > 10000)
-    fail("--size must be between 16 and 10000 pixels");
+  command_line::parse(
+      argc, argv, usage,
+      [&](const std::string& a, int& i) {
+        if (a == "--out")
+          o.out = word(i, argc, argv);
+        else if (a == "--lines")
+          o.lines = int(number(i, argc, argv));
+        else if (a == "--orientations")
+          o.orientations = int(number(i, argc, argv));
+        else if (a == "--offsets")
+          o.offsets = int(number(i, argc, argv));
+        else if (a == "--scale")
+          o.scale = number(i, argc, argv);
+        else if (a == "--threshold")
+          o.threshold = number(i, argc, argv);
+        else if (a == "--bending")
+          o.local_residual = false;
+        else
+          return o.lights.read(a, i, argc, argv) || o.size.read(a, i, argc, argv);
+        return true;
+      },
+      [&](const std::string& mesh) { o.mesh = mesh; });
+  o.lights.check();
+  o.size.check(16, 10000);
   return o;
 }
 
@@ -120,7 +118,9 @@ int main(int argc, char** argv)
   std::cout << "mesh " << o.mesh << ": " << num_vertices(mesh) << " vertices, " << num_faces(mesh)
             << " faces\n";
   try {
-    const HL::Light_setup<K> lights = HL::default_light_setup(mesh, HLP::number_of_lines(o.lines));
+    const HL::Light_setup<K> lights =
+        o.lights.given() ? o.lights.setup<K>()
+                         : HL::default_light_setup(mesh, HLP::number_of_lines(o.lines));
     std::vector<HL::Highlight_line_irregularity<Mesh>> found;
     CGAL::detect_highlight_line_irregularities(
         mesh, lights, std::back_inserter(found),
@@ -159,7 +159,8 @@ int main(int argc, char** argv)
     std::vector<std::vector<face_descriptor>> regions;
     for (const auto& r : found)
       regions.push_back(r.faces);
-    const pic::Image image = region_overview::picture(mesh, lights, regions, o.width, o.height);
+    const pic::Image image =
+        region_overview::picture(mesh, lights, regions, o.size.width, o.size.height);
     const std::string picture = o.out + ".png";
     if (!pic::write_png(picture, image) || !regions_file) {
       std::cerr << "detect_highlight_line_irregularities: cannot write " << picture << " or "

@@ -99,6 +99,7 @@ const char* usage =
 
 using command_line::fail;
 using command_line::number;
+using command_line::word;
 
 struct Options
 {
@@ -107,10 +108,11 @@ struct Options
   std::string out = "fairing";
   std::string format; // the output meshes' extension, with its dot; empty: the input's
   std::optional<K::Point_3> center;
-  std::optional<double> radius, dent, spacing;
-  std::optional<K::Vector_3> base, direction, normal;
+  std::optional<double> radius, dent;
+  command_line::Light_options lights;
   std::string region_file;
-  int lines = 12, iterations = 50, width = 800, height = 600;
+  int lines = 12, iterations = 50;
+  command_line::Picture_size size{800, 600};
   bool detect = false, show_irregularities = false;
   HL::Fairness_energy energy = HL::Fairness_energy::CURVATURE_VARIATION;
   std::size_t max_regions = std::size_t(-1);
@@ -121,76 +123,63 @@ struct Options
 Options parse(int argc, char** argv)
 {
   Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--help" || a == "-h") {
-      std::cout << usage;
-      std::exit(0);
-    } else if (a == "--out" || a == "--region") {
-      if (++i >= argc)
-        fail("missing value after " + a);
-      (a == "--out" ? o.out : o.region_file) = argv[i];
-    } else if (a == "--format") {
-      if (++i >= argc)
-        fail("missing value after --format");
-      o.format = mesh_io::format_extension(argv[i]);
-      if (o.format.empty())
-        fail(std::string("--format ") + argv[i] + ": must be off, obj, ply or stl");
-    } else if (a == "--center") {
-      const double x = number(i, argc, argv), y = number(i, argc, argv), z = number(i, argc, argv);
-      o.center = K::Point_3(x, y, z);
-    } else if (a == "--base" || a == "--direction" || a == "--normal") {
-      const double x = number(i, argc, argv), y = number(i, argc, argv), z = number(i, argc, argv);
-      (a == "--base" ? o.base : a == "--direction" ? o.direction : o.normal) = K::Vector_3(x, y, z);
-    } else if (a == "--spacing")
-      o.spacing = number(i, argc, argv);
-    else if (a == "--radius")
-      o.radius = number(i, argc, argv);
-    else if (a == "--dent")
-      o.dent = number(i, argc, argv);
-    else if (a == "--lines")
-      o.lines = int(number(i, argc, argv));
-    else if (a == "--detect")
-      o.detect = true;
-    else if (a == "--show-irregularities")
-      o.show_irregularities = true;
-    else if (a == "--mean-curvature")
-      o.energy = HL::Fairness_energy::MEAN_CURVATURE;
-    else if (a == "--willmore")
-      o.energy = HL::Fairness_energy::WILLMORE;
-    else if (a == "--curvature-variation")
-      o.energy = HL::Fairness_energy::CURVATURE_VARIATION;
-    else if (a == "--min-confidence") {
-      o.min_confidence = number(i, argc, argv);
-      if (!(o.min_confidence >= 0 && o.min_confidence <= 1))
-        fail("--min-confidence must be in [0, 1]");
-    } else if (a == "--fairing-margin") {
-      const double n = number(i, argc, argv);
-      if (!(n >= 0 && n <= 1000 && n == std::floor(n)))
-        fail("--fairing-margin must be a whole number of rings in [0, 1000]");
-      o.fairing_margin = int(n);
-    } else if (a == "--max-regions") {
-      const double n = number(i, argc, argv);
-      if (!(n >= 1))
-        fail("--max-regions must be at least 1");
-      o.max_regions = std::size_t(n);
-    } else if (a == "--iterations")
-      o.iterations = int(number(i, argc, argv));
-    else if (a == "--size") {
-      o.width = int(number(i, argc, argv));
-      o.height = int(number(i, argc, argv));
-    } else if (!a.empty() && a[0] == '-')
-      fail("unknown option " + a);
-    else {
-      o.mesh = a;
-      o.default_mesh = false;
-    }
-  }
-  const int given = bool(o.base) + bool(o.direction) + bool(o.normal) + bool(o.spacing);
-  if (given != 0 && given != 4)
-    fail("--base, --direction, --normal and --spacing go together");
-  if (o.width < 64 || o.height < 64 || o.width > 8000 || o.height > 8000)
-    fail("--size must be between 64 and 8000 pixels");
+  command_line::parse(
+      argc, argv, usage,
+      [&](const std::string& a, int& i) {
+        if (a == "--out")
+          o.out = word(i, argc, argv);
+        else if (a == "--region")
+          o.region_file = word(i, argc, argv);
+        else if (a == "--format") {
+          const std::string format = word(i, argc, argv);
+          o.format = mesh_io::format_extension(format);
+          if (o.format.empty())
+            fail("--format " + format + ": must be off, obj, ply or stl");
+        } else if (a == "--center") {
+          const auto c = command_line::triple(i, argc, argv);
+          o.center = K::Point_3(c[0], c[1], c[2]);
+        } else if (a == "--radius")
+          o.radius = number(i, argc, argv);
+        else if (a == "--dent")
+          o.dent = number(i, argc, argv);
+        else if (a == "--lines")
+          o.lines = int(number(i, argc, argv));
+        else if (a == "--detect")
+          o.detect = true;
+        else if (a == "--show-irregularities")
+          o.show_irregularities = true;
+        else if (a == "--mean-curvature")
+          o.energy = HL::Fairness_energy::MEAN_CURVATURE;
+        else if (a == "--willmore")
+          o.energy = HL::Fairness_energy::WILLMORE;
+        else if (a == "--curvature-variation")
+          o.energy = HL::Fairness_energy::CURVATURE_VARIATION;
+        else if (a == "--min-confidence") {
+          o.min_confidence = number(i, argc, argv);
+          if (!(o.min_confidence >= 0 && o.min_confidence <= 1))
+            fail("--min-confidence must be in [0, 1]");
+        } else if (a == "--fairing-margin") {
+          const double n = number(i, argc, argv);
+          if (!(n >= 0 && n <= 1000 && n == std::floor(n)))
+            fail("--fairing-margin must be a whole number of rings in [0, 1000]");
+          o.fairing_margin = int(n);
+        } else if (a == "--max-regions") {
+          const double n = number(i, argc, argv);
+          if (!(n >= 1))
+            fail("--max-regions must be at least 1");
+          o.max_regions = std::size_t(n);
+        } else if (a == "--iterations")
+          o.iterations = int(number(i, argc, argv));
+        else
+          return o.lights.read(a, i, argc, argv) || o.size.read(a, i, argc, argv);
+        return true;
+      },
+      [&](const std::string& mesh) {
+        o.mesh = mesh;
+        o.default_mesh = false;
+      });
+  o.lights.check();
+  o.size.check(64, 8000);
   return o;
 }
 
@@ -224,9 +213,9 @@ pic::Image picture(const Mesh& mesh, const std::vector<face_descriptor>& region,
   pic::Vector3 view;
   for (int k = 0; k < 3; ++k)
     view[k] = -(0.35 * h[k] + z[k]);
-  pic::Camera camera = pic::fit_camera(focus, view, h, o.width, o.height, 0.0);
+  pic::Camera camera = pic::fit_camera(focus, view, h, o.size.width, o.size.height, 0.0);
   camera.view_height *= 1.35;
-  pic::Renderer renderer(o.width, o.height, camera);
+  pic::Renderer renderer(o.size.width, o.size.height, camera);
   renderer.draw_mesh(points, triangles, pic::Surface_style{}, colors);
   std::vector<std::vector<K::Point_3>> lines;
   CGAL::compute_highlight_lines(
@@ -293,8 +282,8 @@ std::pair<long long, long long> region_levels(const Mesh& mesh, const HL::Light_
 
 HL::Light_setup<K> sweep_lights(const Mesh& mesh, const Options& o)
 {
-  return o.base ? HL::Light_setup<K>(CGAL::ORIGIN + *o.base, *o.direction, *o.normal, *o.spacing)
-                : HL::default_light_setup(mesh, HLP::number_of_lines(60));
+  return o.lights.given() ? o.lights.setup<K>()
+                          : HL::default_light_setup(mesh, HLP::number_of_lines(60));
 }
 
 // Automatic mode: find the irregular regions of the whole mesh, fair them one at a time (the
@@ -337,7 +326,8 @@ int detect_and_fair(Mesh& mesh, const Options& o)
   for (const auto& r : found)
     regions.push_back(HL::grown_face_region(mesh, r.faces, o.fairing_margin, 60.0,
                                             get(CGAL::vertex_point, mesh)));
-  const pic::Image before = region_overview::picture(mesh, lights, regions, o.width, o.height);
+  const pic::Image before =
+      region_overview::picture(mesh, lights, regions, o.size.width, o.size.height);
 
   std::size_t repaired = 0;
   for (std::size_t i = 0; i < found.size(); ++i) {
@@ -355,7 +345,8 @@ int detect_and_fair(Mesh& mesh, const Options& o)
       std::cout << "not faired: " << e.what() << " (left unchanged)\n";
     }
   }
-  const pic::Image after = region_overview::picture(mesh, lights, regions, o.width, o.height);
+  const pic::Image after =
+      region_overview::picture(mesh, lights, regions, o.size.width, o.size.height);
   pic::Layout layout;
   layout.title = "Irregular regions found and faired";
   const pic::Image both =
@@ -435,8 +426,7 @@ int main(int argc, char** argv)
     // light tunnel of the whole mesh, with the spacing refined so that about o.lines lights
     // cross the region (the close-up shows the lines' shape there).
     const HL::Light_setup<K> lights =
-        o.base ? HL::Light_setup<K>(CGAL::ORIGIN + *o.base, *o.direction, *o.normal, *o.spacing)
-               : region_light_tunnel(mesh, region, o.lines);
+        o.lights.given() ? o.lights.setup<K>() : region_light_tunnel(mesh, region, o.lines);
     std::cout << "lights: base " << lights.base_point() << ", direction "
               << lights.light_direction() << ", plane normal " << lights.plane_normal()
               << ", spacing " << lights.spacing() << "\n";
@@ -472,8 +462,9 @@ int main(int argc, char** argv)
       std::vector<std::vector<face_descriptor>> regions;
       for (const auto& r : find_irregularities(mesh, sweep))
         regions.push_back(r.faces);
-      if (!pic::write_png(o.out + "_irregularities.png",
-                          region_overview::picture(mesh, sweep, regions, o.width, o.height)))
+      if (!pic::write_png(
+              o.out + "_irregularities.png",
+              region_overview::picture(mesh, sweep, regions, o.size.width, o.size.height)))
         fail("cannot write " + o.out + "_irregularities.png");
       std::cout << "wrote " << o.out << "_irregularities.png (tinted: the irregular regions)\n";
     }

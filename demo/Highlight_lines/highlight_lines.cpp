@@ -64,12 +64,7 @@ const char* usage =
 
 using command_line::fail;
 using command_line::number;
-
-K::Vector_3 vector3(int& i, int argc, char** argv)
-{
-  const double x = number(i, argc, argv), y = number(i, argc, argv), z = number(i, argc, argv);
-  return K::Vector_3(x, y, z);
-}
+using command_line::word;
 
 struct Options
 {
@@ -77,60 +72,39 @@ struct Options
   std::string out = "highlight_lines";
   std::string mesh_out;
   int lines = 40;
-  std::optional<K::Vector_3> base, direction, normal;
-  std::optional<double> spacing;
+  command_line::Light_options lights;
   std::optional<std::pair<long long, long long>> levels;
   double azimuth = 35, elevation = 30;
-  int width = 1600, height = 1000;
+  command_line::Picture_size size{1600, 1000};
 };
 
 Options parse(int argc, char** argv)
 {
   Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--help" || a == "-h") {
-      std::cout << usage;
-      std::exit(0);
-    } else if (a == "--out") {
-      if (++i >= argc)
-        fail("missing value after --out");
-      o.out = argv[i];
-    } else if (a == "--mesh-out") {
-      if (++i >= argc)
-        fail("missing value after --mesh-out");
-      o.mesh_out = argv[i];
-      if (!mesh_io::writable_extension(mesh_io::extension(o.mesh_out)))
-        fail("--mesh-out " + o.mesh_out + ": the extension must be .off, .obj, .ply or .stl");
-    } else if (a == "--lines")
-      o.lines = int(number(i, argc, argv));
-    else if (a == "--base")
-      o.base = vector3(i, argc, argv);
-    else if (a == "--direction")
-      o.direction = vector3(i, argc, argv);
-    else if (a == "--normal")
-      o.normal = vector3(i, argc, argv);
-    else if (a == "--spacing")
-      o.spacing = number(i, argc, argv);
-    else if (a == "--levels") {
-      const double lo = number(i, argc, argv), hi = number(i, argc, argv);
-      o.levels = std::make_pair((long long)lo, (long long)hi);
-    } else if (a == "--view") {
-      o.azimuth = number(i, argc, argv);
-      o.elevation = number(i, argc, argv);
-    } else if (a == "--size") {
-      o.width = int(number(i, argc, argv));
-      o.height = int(number(i, argc, argv));
-    } else if (!a.empty() && a[0] == '-')
-      fail("unknown option " + a);
-    else
-      o.mesh = a;
-  }
-  const int given = bool(o.base) + bool(o.direction) + bool(o.normal) + bool(o.spacing);
-  if (given != 0 && given != 4)
-    fail("--base, --direction, --normal and --spacing go together");
-  if (o.width < 16 || o.height < 16 || o.width > 10000 || o.height > 10000)
-    fail("--size must be between 16 and 10000 pixels");
+  command_line::parse(
+      argc, argv, usage,
+      [&](const std::string& a, int& i) {
+        if (a == "--out")
+          o.out = word(i, argc, argv);
+        else if (a == "--mesh-out") {
+          o.mesh_out = word(i, argc, argv);
+          if (!mesh_io::writable_extension(mesh_io::extension(o.mesh_out)))
+            fail("--mesh-out " + o.mesh_out + ": the extension must be .off, .obj, .ply or .stl");
+        } else if (a == "--lines")
+          o.lines = int(number(i, argc, argv));
+        else if (a == "--levels") {
+          const double lo = number(i, argc, argv), hi = number(i, argc, argv);
+          o.levels = std::make_pair((long long)lo, (long long)hi);
+        } else if (a == "--view") {
+          o.azimuth = number(i, argc, argv);
+          o.elevation = number(i, argc, argv);
+        } else
+          return o.lights.read(a, i, argc, argv) || o.size.read(a, i, argc, argv);
+        return true;
+      },
+      [&](const std::string& mesh) { o.mesh = mesh; });
+  o.lights.check();
+  o.size.check(16, 10000);
   return o;
 }
 
@@ -153,9 +127,8 @@ int main(int argc, char** argv)
 
   try {
     const HL::Light_setup<K> lights =
-        options.base ? HL::Light_setup<K>(CGAL::ORIGIN + *options.base, *options.direction,
-                                          *options.normal, *options.spacing)
-                     : HL::default_light_setup(mesh, HLP::number_of_lines(options.lines));
+        options.lights.given() ? options.lights.setup<K>()
+                               : HL::default_light_setup(mesh, HLP::number_of_lines(options.lines));
     std::cout << "lights: base " << lights.base_point() << ", direction "
               << lights.light_direction() << ", plane normal " << lights.plane_normal()
               << ", spacing " << lights.spacing() << "\n";
@@ -205,8 +178,8 @@ int main(int argc, char** argv)
     for (int k = 0; k < 3; ++k)
       view[k] = -(std::cos(e) * (std::cos(a) * h[k] + std::sin(a) * w[k]) + std::sin(e) * z[k]);
     const auto camera =
-        highlight_picture::fit_camera(points, view, z, options.width, options.height);
-    highlight_picture::Renderer renderer(options.width, options.height, camera);
+        highlight_picture::fit_camera(points, view, z, options.size.width, options.size.height);
+    highlight_picture::Renderer renderer(options.size.width, options.size.height, camera);
     renderer.draw_mesh(points, triangles);
     renderer.draw_polylines(mesh_picture::polyline_arrays(polylines));
     const std::string picture_path = options.out + ".png";
