@@ -110,13 +110,8 @@ int main(int argc, char** argv)
   command_line::program() = "detect_highlight_line_irregularities";
   const Options o = parse(argc, argv);
   Mesh mesh;
-  if (!mesh_io::read_triangle_mesh(o.mesh, mesh)) {
-    std::cerr << "detect_highlight_line_irregularities: cannot read a polygon mesh from " << o.mesh
-              << "\n";
+  if (!mesh_io::read_input_mesh(o.mesh, mesh, command_line::program()))
     return 1;
-  }
-  std::cout << "mesh " << o.mesh << ": " << num_vertices(mesh) << " vertices, " << num_faces(mesh)
-            << " faces\n";
   try {
     const HL::Light_setup<K> lights =
         o.lights.given() ? o.lights.setup<K>()

@@ -372,12 +372,8 @@ int main(int argc, char** argv)
   command_line::program() = "fair_with_highlight_lines";
   const Options o = parse(argc, argv);
   Mesh mesh;
-  if (!mesh_io::read_triangle_mesh(o.mesh, mesh)) {
-    std::cerr << "fair_with_highlight_lines: cannot read a polygon mesh from " << o.mesh << "\n";
+  if (!mesh_io::read_input_mesh(o.mesh, mesh, command_line::program()))
     return 1;
-  }
-  std::cout << "mesh " << o.mesh << ": " << num_vertices(mesh) << " vertices, " << num_faces(mesh)
-            << " faces\n";
   try {
     const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(mesh);
     const double diagonal =

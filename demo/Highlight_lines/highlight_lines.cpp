@@ -118,12 +118,8 @@ int main(int argc, char** argv)
   const Options options = parse(argc, argv);
 
   Mesh mesh;
-  if (!mesh_io::read_triangle_mesh(options.mesh, mesh)) {
-    std::cerr << "highlight_lines: cannot read a polygon mesh from " << options.mesh << "\n";
+  if (!mesh_io::read_input_mesh(options.mesh, mesh, command_line::program()))
     return 1;
-  }
-  std::cout << "mesh " << options.mesh << ": " << num_vertices(mesh) << " vertices, "
-            << num_faces(mesh) << " faces\n";
 
   try {
     const HL::Light_setup<K> lights =

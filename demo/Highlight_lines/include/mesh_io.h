@@ -106,6 +106,20 @@ bool read_triangle_mesh(const std::string& path, Mesh& mesh, std::ostream& notes
   return true;
 }
 
+// Reads a program's input mesh (read_triangle_mesh()) and says what it holds; false, after a
+// message naming `program`, if it cannot.
+template <typename Mesh>
+bool read_input_mesh(const std::string& path, Mesh& mesh, const std::string& program)
+{
+  if (!read_triangle_mesh(path, mesh)) {
+    std::cerr << program << ": cannot read a polygon mesh from " << path << "\n";
+    return false;
+  }
+  std::cout << "mesh " << path << ": " << num_vertices(mesh) << " vertices, " << num_faces(mesh)
+            << " faces\n";
+  return true;
+}
+
 // Writes `mesh` to `path` (the format by the extension), with all the digits of a double.
 template <typename Mesh>
 bool write_mesh(const std::string& path, const Mesh& mesh)
