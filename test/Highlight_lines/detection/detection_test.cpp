@@ -1067,6 +1067,32 @@ TEST(Detection, RejectsParametersOutOfTheirDomain)
   EXPECT_TRUE(found.empty());
 }
 
+// On a small mesh no light setup has samples enough (32) to tell its noise: the scores are then
+// taken against the noise of all the samples together, not against a vanishing floor (the
+// 12 x 12 hood of test/Highlight_lines/data scored 2.2e299 with explicit lights from above).
+TEST(LocalResidual, ScoresStayFiniteWhereNoSetupKnowsItsNoise)
+{
+  const HB::Mesh dented =
+      test::to_mesh<HB::Mesh>(test::grid(12, 2.0 / 12, -1, -1, [](double x, double y) {
+        return test::hood(x, y) - 0.04 * std::exp(-((x + 0.3) * (x + 0.3) + y * y) / 0.05);
+      }));
+  std::size_t regions = 0;
+  for (const HB::Mesh& mesh : {dented, smooth_hood(1, 12), smooth_hood(2, 16)}) {
+    for (const auto& lights : {HL::Light_setup<HB::Kernel>(HB::Point(0, 0, 3), HB::Vector(1, 0, 0),
+                                                           HB::Vector(0, 0, 1), 0.1),
+                               HL::default_light_setup(mesh)}) {
+      std::vector<HB::Irregularity> found;
+      CGAL::detect_highlight_line_irregularities(mesh, lights, std::back_inserter(found));
+      regions += found.size();
+      for (const auto& region : found) {
+        EXPECT_TRUE(std::isfinite(region.score));
+        EXPECT_LT(region.score, 1e3);
+      }
+    }
+  }
+  std::cout << regions << " regions on the small hoods\n";
+}
+
 TEST(Detection, RejectsNonFiniteCoordinates)
 {
   HB::Mesh mesh = smooth_hood(1, 20);

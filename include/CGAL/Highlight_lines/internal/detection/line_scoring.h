@@ -149,8 +149,8 @@ public:
   // After score_level_residuals() on every setup: each candidate's offset over the noise of its
   // line, at least `line_noise_floor` of its setup's, itself floored at half the median over the
   // setups (a setup that only sees planes has next to none, and would make any rounding an
-  // anomaly); the setup's alone where the line has too few samples. Those above `threshold`
-  // stay.
+  // anomaly; where no setup knows its noise, at half that of all the samples); the setup's alone
+  // where the line has too few samples. Those above `threshold` stay.
   void divide_by_noise(double threshold)
   {
     std::vector<double> known;
@@ -162,6 +162,19 @@ public:
       std::nth_element(known.begin(), known.begin() + std::ptrdiff_t(known.size() / 2),
                        known.end());
       floor = (std::max)(floor, 0.5 * known[known.size() / 2]);
+    } else {
+      // No setup has samples enough to tell its noise (a small mesh, short lines): half that of
+      // all the scored samples together; with too few of those, no sample can be told apart
+      // from the noise (the scores would be offsets over 1e-300).
+      std::vector<double> values;
+      for (const Scored_sample& sample : samples)
+        values.push_back(sample.value);
+      const Robust_statistics all = robust_statistics_signed(values);
+      if (all.count < 32 || !(all.deviation > 0)) {
+        anomalies.clear();
+        return;
+      }
+      floor = 0.5 * all.deviation;
     }
     std::size_t kept = 0;
     for (std::size_t i = 0; i < anomalies.size(); ++i) {
