@@ -9,31 +9,16 @@
 #include <CGAL/Highlight_lines/Invalid_input.h>
 #include <CGAL/Highlight_lines/Light_setup.h>
 #include <CGAL/Highlight_lines/parameters.h>
-#include <CGAL/Highlight_lines/internal/detection/anomaly_regions.h>
 #include <CGAL/Highlight_lines/internal/detection/detection_options.h>
-#include <CGAL/Highlight_lines/internal/detection/highlight_distance_field.h>
-#include <CGAL/Highlight_lines/internal/detection/light_planes.h>
-#include <CGAL/Highlight_lines/internal/detection/line_bending.h>
-#include <CGAL/Highlight_lines/internal/detection/line_scoring.h>
-#include <CGAL/Highlight_lines/internal/detection/mirror_symmetry.h>
-#include <CGAL/Highlight_lines/internal/detection/region_contrast.h>
-#include <CGAL/Highlight_lines/internal/detection/regions_across_scales.h>
-#include <CGAL/Highlight_lines/internal/detection/sharp_edge_vertices.h>
-#include <CGAL/Highlight_lines/internal/detection/region_assessment.h>
+#include <CGAL/Highlight_lines/internal/detection/irregularity_sweep.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
-#include <algorithm>
-#include <array>
-#include <memory>
-#include <cmath>
-#include <cstdint>
-#include <set>
-#include <string>
+#include <cstddef>
 #include <type_traits>
-#include <vector>
+#include <utility>
 
 namespace CGAL {
 
@@ -346,81 +331,22 @@ OutputIterator detect_highlight_line_irregularities(
   namespace HL = Highlight_lines;
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  using namespace HL::internal::vector3;
-  typedef boost::graph_traits<TriangleMesh> Graph_traits;
-  typedef typename Graph_traits::vertex_descriptor vertex_descriptor;
   typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type Vertex_point_map;
   typedef HL::Highlight_line_sweeper<TriangleMesh, Vertex_point_map, GeomTraits, ConcurrencyTag>
       Sweeper;
 
   const HL::internal::Detection_options options(np);
   const Sweeper sweeper(tm, np); // checks the mesh
-  const auto& local = sweeper.local_mesh();
-
-  // The model faces in compact vertex ids (the detection works on them only).
-  const std::size_t nf = local.number_of_model_faces;
-  std::vector<std::array<int, 3>> corners(local.face_vertices.begin(),
-                                          local.face_vertices.begin() + std::ptrdiff_t(nf));
-  const int nv = int(local.number_of_model_vertices);
-  auto vim = get_initialized_vertex_index_map(tm, np);
-  std::vector<int> compact_of_index;
-  for (int v = 0; v < nv; ++v) {
-    const std::size_t index = get(vim, local.vertex_handles[std::size_t(v)]);
-    if (index >= compact_of_index.size())
-      compact_of_index.resize(index + 1, -1);
-    compact_of_index[index] = v;
-  }
-  // The compact id of a mesh vertex (-1 if it is not a model vertex), and that of the mesh
-  // vertex nearest to a highlight node (its vertex, or the nearer end of its edge).
-  auto compact_vertex = [&](vertex_descriptor v) {
-    const std::size_t index = get(vim, v);
-    return index < compact_of_index.size() ? compact_of_index[index] : -1;
-  };
-  auto nearest_compact_vertex = [&](const auto& node) {
-    vertex_descriptor v = node.vertex;
-    if (!node.is_on_vertex())
-      v = node.parameter < 0.5 ? source(node.halfedge, tm) : target(node.halfedge, tm);
-    return compact_vertex(v);
-  };
-  double edge_sum = 0;
-  std::size_t edge_count = 0;
-  for (const auto& e : local.edge_vertices) {
-    const double* p = local.point(e[0]);
-    const double* q = local.point(e[1]);
-    edge_sum += std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
-                          (p[2] - q[2]) * (p[2] - q[2]));
-    ++edge_count;
-  }
-  if (edge_count == 0)
+  const auto vim = get_initialized_vertex_index_map(tm, np);
+  HL::internal::Irregularity_sweep<TriangleMesh, GeomTraits, Sweeper, std::decay_t<decltype(vim)>>
+      detection(tm, sweeper, lights, options, vim);
+  if (detection.is_empty())
     return out;
-  const double mean_edge = edge_sum / double(edge_count);
 
-  // With the local residual, the mirror symmetry of the surface, if it has one (design is
-  // symmetric, defects are not), and the asymmetry of each vertex, computed when needed.
-  std::vector<Vec3> points(static_cast<std::size_t>(nv));
-  for (int v = 0; v < nv; ++v) {
-    const double* p = local.point(v);
-    points[std::size_t(v)] = Vec3{p[0], p[1], p[2]};
-  }
-  std::unique_ptr<HL::internal::Mirror_symmetry> mirror;
-  std::vector<double> mirror_distance;
-  if (options.local_residual) {
-    mirror = std::make_unique<HL::internal::Mirror_symmetry>(points, corners, mean_edge);
-    mirror_distance.assign(static_cast<std::size_t>(nv), -1.0);
-  }
-
-  const HL::internal::Vertex_adjacency adjacency(corners, nv);
-
-  // One sweep at the scale `scale` (w, in mean edge lengths), the `pass`-th of `passes`: its
-  // regions are appended to `found` (their compact faces to `found_faces`); false if cancelled.
-  std::vector<HL::Highlight_line_irregularity<TriangleMesh>> found;
-  std::vector<std::vector<int>> found_faces;
-  std::vector<int> found_centre; // with the local residual: the compact centre vertex
-  // What the sweeps of every scale read. Only the options that make sense for every setup of a
-  // sweep. An edge crossing more than max_levels_per_edge levels is dropped with its faces, as
-  // before the model's facing window: the scoring is tuned on it (with the facing window, the
-  // recall on the shared fandisk falls from 5 to 4 of 8 defects in
-  // Detection.FindsMostSmallDefectsAnywhereOnSharedCadMeshes).
+  // Only the options that make sense for every setup of a sweep. An edge crossing more than
+  // max_levels_per_edge levels is dropped with its faces, as before the model's facing window:
+  // the scoring is tuned on it (with the facing window, the recall on the shared fandisk falls
+  // from 5 to 4 of 8 defects in Detection.FindsMostSmallDefectsAnywhereOnSharedCadMeshes).
   const auto some_model_options = HL::parameters::facing_side_only(
       HL::parameters::max_levels_per_edge(
           choose_parameter(get_parameter(np, HL::internal_np::max_levels_per_edge), 256)),
@@ -428,342 +354,21 @@ OutputIterator detect_highlight_line_irregularities(
   const CGAL::Named_function_parameters<bool, HL::internal_np::drop_faces_over_cap_t,
                                         std::decay_t<decltype(some_model_options)>>
       model_options(true, some_model_options);
-
-  const double pi = 3.14159265358979323846;
-  // Unit vertex normals (eq. 3), for the incidence test of the samples.
-  std::vector<Vec3> normals(static_cast<std::size_t>(nv));
-  for (int v = 0; v < nv; ++v) {
-    const auto n = sweeper.vertex_normals().unit_normal(v);
-    normals[std::size_t(v)] = Vec3{n[0], n[1], n[2]};
-  }
-  // The vertices of sharp edges: the lines kink there by design, so anomalies within one ring
-  // of them are not counted, and no region grows across one.
-  const std::vector<char> sharp =
-      HL::internal::sharp_edge_vertices(local, options.sharp_edge_angle);
-  std::vector<char> near_sharp = sharp;
-  HL::internal::grow_by_rings(adjacency, 1, near_sharp);
-  const double minimum_facing = std::cos(options.maximum_incidence_angle * pi / 180);
-  // Whether a highlight node lies on a sharp edge's vertex or on an edge with one: the line
-  // kinks there.
-  auto on_sharp_edge = [&](const auto& node) {
-    auto is_sharp = [&](vertex_descriptor v) {
-      const int compact = compact_vertex(v);
-      return compact >= 0 && sharp[std::size_t(compact)];
-    };
-    return node.is_on_vertex()
-               ? is_sharp(node.vertex)
-               : is_sharp(source(node.halfedge, tm)) || is_sharp(target(node.halfedge, tm));
-  };
-
-  // The light planes: `lights`, then (if all sides are looked at) the five other faces of a
-  // cube around the mesh, so that every face is scored by the setups of at least one plane.
-  const std::vector<HL::Light_setup<GeomTraits>> planes =
-      HL::internal::light_planes_around(lights, points, options.all_sides);
-  // How many setups score each vertex: those of the planes it faces within the incidence limit.
-  std::vector<std::size_t> scoring_setups(static_cast<std::size_t>(nv), 0);
-  for (const auto& plane : planes) {
-    const auto z = plane.plane_normal_array();
-    for (int v = 0; v < nv; ++v)
-      if (dot(normals[std::size_t(v)], Vec3{z[0], z[1], z[2]}) >= minimum_facing)
-        scoring_setups[std::size_t(v)] += std::size_t(options.orientations * options.offsets);
-  }
-
   // Progress and cancellation (the `callback` named parameter).
-  constexpr bool has_callback =
-      !parameters::is_default_parameter<NamedParameters, internal_np::callback_t>::value;
   const auto callback =
       choose_parameter(get_parameter(np, internal_np::callback), [](double) { return true; });
-  const std::size_t total_setups =
-      planes.size() * std::size_t(options.orientations * options.offsets);
-  (void)total_setups;
-
-  auto sweep_at_scale = [&](const double scale, const std::size_t pass,
-                            const std::size_t passes) -> bool {
-    HL::internal::Line_bending_scales scales;
-    scales.step = scale * mean_edge / double(scales.fine_samples);
-    // With `local_residual`, the residual's scales (Line_residual_scales): step h = w/4, the
-    // fit from 3w/2 to 4w on either side, the centre's mean over w/2 on either side.
-    HL::internal::Line_residual_scales residual_scales;
-    residual_scales.step = scale * mean_edge / 4.0;
-
-    // The lines of every setup, scored (line_scoring.h).
-    HL::internal::Line_scoring scoring(normals, near_sharp, minimum_facing, mean_edge,
-                                       options.minimum_bending);
-    std::size_t setup_id = 0;
-    HL::internal::Highlight_distance_field field; // with the local residual, per orientation
-    for (const auto& plane : planes)
-      for (int o = 0; o < options.orientations; ++o) {
-        HL::Light_setup<GeomTraits> turned =
-            o == 0 ? plane : plane.rotated(plane.plane_normal(), pi * o / options.orientations);
-        if (options.local_residual) {
-          // Line density from the mesh: the lines at most `w` apart on most of the surface
-          // facing them, so that a defect of the detection's size is crossed by about three
-          // lines of every setup.
-          field.compute(local, normals, turned);
-          turned = HL::internal::with_spacing_from_mesh(turned, field, normals, minimum_facing,
-                                                        scale * mean_edge);
-        }
-        const auto across = turned.index_direction();
-        for (int k = 0; k < options.offsets; ++k, ++setup_id) {
-          const HL::Light_setup<GeomTraits> shifted =
-              k == 0 ? turned
-                     : turned.translated(across * (turned.spacing() * k / options.offsets));
-          const auto model = sweeper.compute(shifted, model_options);
-          if (options.local_residual)
-            scoring.score_level_residuals(model.nodes(), model.lines(),
-                                          shifted.plane_normal_array(), 1 / shifted.spacing_value(),
-                                          field, residual_scales, setup_id, nearest_compact_vertex,
-                                          on_sharp_edge);
-          else
-            scoring.score_bending(model.nodes(), model.lines(), shifted.plane_normal_array(),
-                                  scales, options.threshold, setup_id, nearest_compact_vertex);
-          if constexpr (has_callback)
-            if (!callback((double(pass) + double(setup_id + 1) / double(total_setups)) /
-                          double(passes)))
-              return false; // cancelled: no region
-        }
-      }
-    std::vector<HL::internal::Anomaly>& anomalies = scoring.anomalies;
-    std::vector<HL::internal::Scored_sample>& samples = scoring.samples;
-
-    if (options.local_residual) {
-      scoring.divide_by_noise(options.threshold);
-      const std::vector<std::size_t> seeing_setups = HL::internal::setups_seeing_vertices(
-          samples, setup_id, adjacency, sharp, (std::max)(1, int(std::ceil(scale))),
-          scoring_setups);
-      // A region must show in a share `minimum_evidence` of the setups that can see it.
-      const std::vector<std::size_t> minimum_setups =
-          HL::internal::required_setups(seeing_setups, options.minimum_evidence);
-      const double w = scale * mean_edge;
-      // A defect of radius R <= 3w/2 displaces the lines within R of its centre: its anomalies lie
-      // in a disc of radius 2w. What the surroundings show is read up to three times as far.
-      const double disc = 2 * w, surroundings = 3 * disc;
-      const auto regions = HL::internal::group_anomalies_around_peaks(
-          corners, points, anomalies, disc, options.margin * mean_edge, surroundings, 2 * disc,
-          minimum_setups, sharp);
-      // The clusters the anomalies form when those closer than `detection_scale` edges are joined
-      // (without a margin): a defect's stay on their own, those of a fillet, a panel joint or a
-      // soft crease chain along it, those of a change of shape at a larger scale over it.
-      const int join_rings = (std::max)(1, int(std::ceil(scale)));
-      // The cluster of each anomaly of `members` (indices into `anomalies`) among them, and the
-      // shape of each cluster.
-      auto cluster = [&](const std::vector<std::size_t>& members,
-                         std::vector<std::size_t>& cluster_of,
-                         std::vector<std::array<double, 2>>& cluster_shape) {
-        std::vector<HL::internal::Anomaly> subset;
-        for (std::size_t i : members)
-          subset.push_back(anomalies[i]);
-        const auto clusters = HL::internal::group_anomalies(
-            corners, nv, subset, join_rings, 0,
-            std::vector<std::size_t>(static_cast<std::size_t>(nv), std::size_t(1)), sharp);
-        cluster_of.assign(anomalies.size(), std::size_t(-1));
-        cluster_shape.assign(clusters.size(), {0, 0});
-        for (std::size_t k = 0; k < clusters.size(); ++k) {
-          std::set<int> cluster_vertices;
-          for (std::size_t j : clusters[k].anomalies) {
-            cluster_of[members[j]] = k;
-            cluster_vertices.insert(subset[j].vertex);
-          }
-          cluster_shape[k] = HL::internal::spreads_of_vertices(points, cluster_vertices);
-        }
-      };
-      std::vector<std::size_t> all_anomalies(anomalies.size());
-      for (std::size_t i = 0; i < anomalies.size(); ++i)
-        all_anomalies[i] = i;
-      std::vector<std::size_t> cluster_of;
-      std::vector<std::array<double, 2>> cluster_shape;
-      cluster(all_anomalies, cluster_of, cluster_shape);
-      // On a mirror symmetric surface, the anomalies of the design are explained by the
-      // symmetry; a defect next to a feature would chain with the feature's anomalies and look
-      // elongated. So the shape of a region that holds anomalies near asymmetric vertices (those
-      // farther from their mirror image than the surface's own asymmetry, and the vertices
-      // within `detection_scale` rings of them) is that of their cluster without the others.
-      std::vector<char> asymmetric;
-      std::vector<std::size_t> asymmetric_cluster_of;
-      std::vector<std::array<double, 2>> asymmetric_shape;
-      if (mirror && mirror->is_symmetric()) {
-        asymmetric.assign(static_cast<std::size_t>(nv), 0);
-        for (int v = 0; v < nv; ++v) {
-          double& a = mirror_distance[std::size_t(v)];
-          if (!(a >= 0))
-            a = mirror->asymmetry(v);
-          asymmetric[std::size_t(v)] = a > mirror->tolerance();
-        }
-        HL::internal::grow_by_rings(adjacency, join_rings, asymmetric, sharp);
-        std::vector<std::size_t> members;
-        for (std::size_t i = 0; i < anomalies.size(); ++i)
-          if (asymmetric[std::size_t(anomalies[i].vertex)])
-            members.push_back(i);
-        cluster(members, asymmetric_cluster_of, asymmetric_shape);
-      }
-      // The contrast of each region with its surroundings (between `disc` and `surroundings`
-      // from its centre), from every scored sample.
-      HL::internal::Region_contrast contrast_with_surroundings(points, adjacency, sharp, samples,
-                                                               disc, surroundings);
-      samples.clear();
-      samples.shrink_to_fit();
-      for (const auto& region : regions) {
-        if (region.anomalies.empty() || region.faces.empty())
-          continue;
-        const double contrast = contrast_with_surroundings(region, anomalies);
-        HL::Highlight_line_irregularity<TriangleMesh> irregularity;
-        irregularity.faces.reserve(region.faces.size());
-        for (int f : region.faces)
-          irregularity.faces.push_back(local.face_handles[std::size_t(f)]);
-        std::set<std::size_t> lines_seen;
-        int peak = region.centre;
-        for (std::size_t i : region.anomalies) {
-          const HL::internal::Anomaly& a = anomalies[i];
-          lines_seen.insert(a.line);
-          if (a.score > irregularity.score) {
-            irregularity.score = a.score;
-            peak = a.vertex;
-          }
-          irregularity.max_bending = (std::max)(irregularity.max_bending, a.bending);
-        }
-        irregularity.peak_vertex = local.vertex_handles[std::size_t(peak)];
-        irregularity.number_of_anomalies = region.anomalies.size();
-        irregularity.number_of_lines = lines_seen.size();
-        irregularity.number_of_light_setups = region.setups;
-        // The score is the region's contrast with its surroundings, where they have samples
-        // enough; else that of its strongest anomaly against the noise of its line.
-        if (contrast >= 0)
-          irregularity.score = contrast;
-
-        // Local or not: the shape of the cluster of the region's strongest anomaly (its spread
-        // along its two main axes, four standard deviations). The fit of a sample sees a defect
-        // up to 4w away, so a defect up to the detection's scale (R <= 3w/2) spreads its
-        // anomalies over a length of at most 2R + 8w = 11w; longer clusters are shape at another
-        // scale, and those more than twice as long as wide follow a feature.
-        std::size_t strongest = region.anomalies.front();
-        for (std::size_t i : region.anomalies)
-          if (anomalies[i].score > anomalies[strongest].score)
-            strongest = i;
-        std::array<double, 2> axes = cluster_shape[cluster_of[strongest]];
-        if (!asymmetric.empty()) {
-          std::size_t strongest_asymmetric = std::size_t(-1);
-          for (std::size_t i : region.anomalies)
-            if (asymmetric[std::size_t(anomalies[i].vertex)] &&
-                (strongest_asymmetric == std::size_t(-1) ||
-                 anomalies[i].score > anomalies[strongest_asymmetric].score))
-              strongest_asymmetric = i;
-          if (strongest_asymmetric != std::size_t(-1))
-            axes = asymmetric_shape[asymmetric_cluster_of[strongest_asymmetric]];
-        }
-        const HL::internal::Anomaly_shape shape = HL::internal::anomaly_shape(axes, w, 11 * w);
-        const double seeing =
-            double((std::max)(std::size_t(1), scoring_setups[std::size_t(region.centre)]));
-        irregularity.confidence =
-            (std::min)(1.0, double(region.setups) / seeing) * shape.slenderness * shape.locality;
-        // Design is symmetric: on a mirror symmetric surface, a region whose surface has its
-        // mirror image (up to the surface's own asymmetry) is design, however round and
-        // isolated; a defect moves its surface by its height away from its mirror image.
-        if (mirror && mirror->is_symmetric()) {
-          double asymmetry = 0;
-          for (int f : region.faces)
-            for (int v : corners[std::size_t(f)]) {
-              double& a = mirror_distance[std::size_t(v)];
-              if (!(a >= 0))
-                a = mirror->asymmetry(v);
-              asymmetry = (std::max)(asymmetry, a);
-            }
-          irregularity.confidence *= (std::min)(1.0, std::pow(asymmetry / mirror->tolerance(), 2));
-        }
-        irregularity.kind = HL::internal::kind_of_region(shape, [&] {
-          return HL::internal::dent_or_bump_around_centre(local, points, corners, adjacency, sharp,
-                                                          region.faces, region.centre,
-                                                          normals[std::size_t(region.centre)]);
-        });
-        irregularity.scale = scale;
-        found.push_back(std::move(irregularity));
-        found_faces.push_back(region.faces);
-        found_centre.push_back(region.centre);
-      }
-    } else {
-      const int join_rings = (std::max)(1, int(std::ceil(scale)));
-      // A region must show in a share `minimum_evidence` of the setups that face it.
-      const std::vector<std::size_t> minimum_setups =
-          HL::internal::required_setups(scoring_setups, options.minimum_evidence);
-      const auto regions = HL::internal::group_anomalies(corners, nv, anomalies, join_rings,
-                                                         options.margin, minimum_setups, sharp);
-      for (const auto& region : regions) {
-        if (region.anomalies.empty())
-          continue;
-        HL::Highlight_line_irregularity<TriangleMesh> irregularity;
-        irregularity.faces.reserve(region.faces.size());
-        for (int f : region.faces)
-          irregularity.faces.push_back(local.face_handles[std::size_t(f)]);
-        std::set<std::size_t> lines_seen, setups_seen;
-        for (std::size_t i : region.anomalies) {
-          const HL::internal::Anomaly& a = anomalies[i];
-          lines_seen.insert(a.line);
-          setups_seen.insert(a.setup);
-          if (a.score > irregularity.score) {
-            irregularity.score = a.score;
-            irregularity.peak_vertex = local.vertex_handles[std::size_t(a.vertex)];
-          }
-          irregularity.max_bending = (std::max)(irregularity.max_bending, a.bending);
-        }
-        irregularity.number_of_anomalies = region.anomalies.size();
-        irregularity.number_of_lines = lines_seen.size();
-        irregularity.number_of_light_setups = setups_seen.size();
-
-        // The shape of the anomalies: their spread along the two main axes (standard deviations
-        // of the positions of their vertices, principal axes of the covariance).
-        std::set<int> anomaly_vertices;
-        for (std::size_t i : region.anomalies)
-          anomaly_vertices.insert(anomalies[i].vertex);
-        const auto axes = HL::internal::spreads_of_vertices(points, anomaly_vertices);
-        const double w = scale * mean_edge;
-        // A defect is local: the response to one of radius R spreads over R + 3w/2 from its
-        // centre, so a defect up to the detection's scale (R <= 3w/2) spreads its anomalies over
-        // a length of at most 6w. Larger or longer regions are shape at another scale: design.
-        const HL::internal::Anomaly_shape shape = HL::internal::anomaly_shape(axes, w, 6 * w);
-        std::size_t seeing = 1;
-        for (std::size_t i : region.anomalies)
-          seeing = (std::max)(seeing, scoring_setups[std::size_t(anomalies[i].vertex)]);
-        irregularity.confidence = (std::min)(1.0, double(setups_seen.size()) / double(seeing)) *
-                                  shape.slenderness * shape.locality;
-        irregularity.kind = HL::internal::kind_of_region(shape, [&] {
-          int peak = 0; // the strongest anomaly's vertex
-          double best = -1;
-          for (std::size_t i : region.anomalies)
-            if (anomalies[i].score > best) {
-              best = anomalies[i].score;
-              peak = anomalies[i].vertex;
-            }
-          return HL::internal::dent_or_bump_at_peak(local, corners, region.faces, peak,
-                                                    normals[std::size_t(peak)]);
-        });
-        irregularity.scale = scale;
-        found.push_back(std::move(irregularity));
-        found_faces.push_back(region.faces);
-      }
-    }
-    return true;
-  };
 
   // The bending measure sweeps once. The local residual at scale w sees defects of radius up to
   // 3w/2 (wider ones move the lines over the fit's window too, and are partly absorbed into the
   // prediction), so its sweep can be repeated at 2w, 4w, ... (`number_of_scales`); the lines of
-  // each are twice as far apart as those of the one before, so it costs about half as much. A
-  // region keeps its best scale: the strongest region first, then every region that shares no
-  // face with a stronger one.
+  // each are twice as far apart as those of the one before, so it costs about half as much.
   const std::size_t passes = options.local_residual ? std::size_t(options.scales) : 1;
   for (std::size_t pass = 0; pass < passes; ++pass)
-    if (!sweep_at_scale(options.scale * double(std::size_t(1) << pass), pass, passes))
+    if (!detection.sweep_at_scale(options.scale * double(std::size_t(1) << pass), pass, passes,
+                                  model_options, callback))
       return out; // cancelled: no region
-  std::vector<std::size_t> order(found.size());
-  for (std::size_t i = 0; i < found.size(); ++i)
-    order[i] = i;
-  std::stable_sort(order.begin(), order.end(), [&found](std::size_t a, std::size_t b) {
-    return found[a].confidence * found[a].score > found[b].confidence * found[b].score;
-  });
-  if (options.local_residual)
-    order = HL::internal::select_regions_across_scales(found, found_faces, found_centre, order,
-                                                       corners, std::size_t(nv));
-  for (std::size_t i : order)
-    *out++ = std::move(found[i]);
+  for (auto& region : detection.strongest_first())
+    *out++ = std::move(region);
   return out;
 }
 
