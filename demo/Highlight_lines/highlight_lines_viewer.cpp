@@ -9,6 +9,8 @@
 // (see `usage`) in the window, one per frame, so that its screenshots are what a user sees.
 #include "viewer_session.h"
 
+#include <CGAL/Highlight_lines/internal/vector3.h>
+
 #include "highlight_picture.h"
 
 #include <GLFW/glfw3.h>
@@ -73,30 +75,11 @@ const char* usage =
 
 // ---- Camera -----------------------------------------------------------------------------------
 
-typedef std::array<double, 3> Vec3;
-Vec3 operator+(const Vec3& a, const Vec3& b)
-{
-  return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
-}
-Vec3 operator-(const Vec3& a, const Vec3& b)
-{
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-Vec3 operator*(double s, const Vec3& a)
-{
-  return {s * a[0], s * a[1], s * a[2]};
-}
-double dot(const Vec3& a, const Vec3& b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-Vec3 cross(const Vec3& a, const Vec3& b)
-{
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
+// The package's 3-vector and its operations.
+using namespace CGAL::Highlight_lines::internal::vector3;
 Vec3 normalized(const Vec3& a)
 {
-  return (1 / std::sqrt(dot(a, a))) * a;
+  return (1 / norm(a)) * a;
 }
 Vec3 to_vec3(const Vector& v)
 {
