@@ -13,6 +13,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/detect_highlight_line_irregularities.h>
 #include <CGAL/fair_with_highlight_lines.h>
+#include <CGAL/Highlight_lines/internal/vector3.h>
 
 #include "mesh_io.h"
 
@@ -125,13 +126,8 @@ inline std::optional<std::pair<Face, Point>> first_hit(const Mesh& mesh, const R
   auto sub = [](const Point& a, const Point& b) {
     return std::array<double, 3>{a.x() - b.x(), a.y() - b.y(), a.z() - b.z()};
   };
-  auto cross = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
-    return std::array<double, 3>{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
-                                 a[0] * b[1] - a[1] * b[0]};
-  };
-  auto dot = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-  };
+  using CGAL::Highlight_lines::internal::vector3::cross;
+  using CGAL::Highlight_lines::internal::vector3::dot;
   const Point origin(ray.origin[0], ray.origin[1], ray.origin[2]);
   double nearest = std::numeric_limits<double>::infinity();
   std::optional<std::pair<Face, Point>> hit;
