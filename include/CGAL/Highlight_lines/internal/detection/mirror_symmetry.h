@@ -22,16 +22,27 @@ namespace CGAL {
 namespace Highlight_lines {
 namespace internal {
 
-// The unit eigenvectors of the symmetric 3 x 3 matrix `c` (Jacobi rotations), as the rows of
-// the result.
-inline std::array<vector3::Vec3, 3> eigenvectors(const double (&c)[3][3])
+// The unit eigenvectors of the symmetric 3 x 3 matrix `c` (Jacobi rotations) whose eigenvalue
+// is apart from the others by more than `relative_gap` of the largest: an eigenvector of a
+// (nearly) repeated eigenvalue is any vector of a plane, set by whatever small asymmetry
+// breaks the tie (on a square plate, by a dent: the plane through it).
+inline std::vector<vector3::Vec3> separate_eigenvectors(const double (&c)[3][3],
+                                                        double relative_gap)
 {
   std::array<double, 3> values;
   double v[3][3];
   vector3::symmetric_eigen(c, values, v);
-  std::array<vector3::Vec3, 3> axes;
-  for (int j = 0; j < 3; ++j)
-    axes[std::size_t(j)] = vector3::Vec3{v[0][j], v[1][j], v[2][j]};
+  const double largest =
+      (std::max)({std::abs(values[0]), std::abs(values[1]), std::abs(values[2])});
+  std::vector<vector3::Vec3> axes;
+  for (int j = 0; j < 3; ++j) {
+    bool separate = true;
+    for (int k = 0; k < 3; ++k)
+      separate = separate && (k == j || std::abs(values[std::size_t(j)] - values[std::size_t(k)]) >
+                                            relative_gap * largest);
+    if (separate)
+      axes.push_back(vector3::Vec3{v[0][j], v[1][j], v[2][j]});
+  }
   return axes;
 }
 
@@ -39,12 +50,12 @@ inline std::array<vector3::Vec3, 3> eigenvectors(const double (&c)[3][3])
 // characters, many machine parts) are mirror symmetric, and so is their design: a feature has
 // its mirror image, or lies on the plane and is its own. A defect breaks the symmetry. The
 // plane of a mirror symmetry passes through the centroid and is normal to a principal axis of
-// the vertices, so only those three planes are tried; the surface is symmetric about one if
-// three quarters of its vertices have their mirror image within `ē/10` of it (measured: a
-// symmetric car body and character 1e-6 ē and 1e-15 ē, a scanned head 0.06 ē, the others
-// 1.4 ē and more). `asymmetry(v)` is the distance of the mirror image of vertex `v` to the
-// surface; `tolerance()` the surface's own asymmetry, the 99th percentile of those distances
-// over its vertices, at least `ē/50` (rounding, remeshing).
+// the vertices, so only those three planes are tried (of axes whose variances are told apart); the
+// surface is symmetric about one if three quarters of its vertices have their mirror image within
+// `ē/10` of it (measured: a symmetric car body and character 1e-6 ē and 1e-15 ē, a scanned head
+// 0.06 ē, the others 1.4 ē and more). `asymmetry(v)` is the distance of the mirror image of vertex
+// `v` to the surface; `tolerance()` the surface's own asymmetry, the 99th percentile of those
+// distances over its vertices, at least `ē/50` (rounding, remeshing).
 class Mirror_symmetry
 {
   typedef CGAL::Simple_cartesian<double> K;
@@ -81,7 +92,7 @@ public:
     centre_ = c;
     std::vector<double> d(points.size());
     double best = 0.1 * mean_edge;
-    for (const Vec3& axis : eigenvectors(m)) {
+    for (const Vec3& axis : separate_eigenvectors(m, minimum_axis_gap)) {
       normal_ = (1 / norm(axis)) * axis;
       // The 3n/4-th smallest distance exceeds `best` as soon as more than n - 3n/4 - 1 do: stop
       // there (the far mirror images of a plane that is no symmetry are the slow queries).
@@ -117,6 +128,10 @@ public:
   }
 
 private:
+  // Principal axes whose variances differ by less than this share of the largest are not
+  // told apart (a symmetric design has its plane where its shape sets it, not where a defect
+  // tips a tie).
+  static constexpr double minimum_axis_gap = 0.05;
   std::vector<vector3::Vec3> points_;
   std::vector<K::Triangle_3> triangles_;
   std::unique_ptr<Tree> tree_;
