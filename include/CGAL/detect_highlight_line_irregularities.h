@@ -112,7 +112,10 @@ the lights by the gradient of the highlight distance `d/s` at the sample's verte
 is unbounded and measures the displacement where a defect is. Each sample's score is the
 offset of its level residual from the median of its light setup divided by the robust
 deviation of its line (at least a quarter of its setup's, itself at least half the median
-over the setups; the setup's alone for lines of fewer than 32 scored samples); anomalies are
+over the setups; the setup's alone for lines of fewer than 32 scored samples; never less than
+a hundredth of a level: on a plane or a regular grid over a smooth surface the lines are
+straight to 1e-15 to 1e-5 of a level, and the grid's own pattern and the far tails of a
+defect would stand out against that); anomalies are
 the peaks along each line (the largest within `3w/2`) above `detection_threshold`, farther
 than one ring from a sharp edge, whose offset exceeds `minimum_bending` mean edge lengths.
 They are grouped around their peaks, strongest first, instead of into clusters: the disc of
@@ -145,7 +148,9 @@ symmetric, and so is their design: a feature has its mirror image, or lies on th
 its own, however round and isolated it is (the Beetle's bump on its midplane, Spot's eyes); a
 defect breaks the symmetry by its height. The surface is mirror symmetric about one of the three
 planes through the centroid of its vertices normal to their principal axes (a mirror plane is
-one of them) if three quarters of the vertices have their mirror image within `ē/10` of the
+one of them; an axis whose variance is within 5 % of the largest of another's is not tried: the
+axes of such a tie, a square plate's, are set by whatever breaks it, a dent on the plate
+included, which then lies on the plane) if three quarters of the vertices have their mirror image within `ē/10` of the
 surface; its own asymmetry `a0` is the 99th percentile of those distances, at least `ē/50`.
 A region's asymmetry `a` is the largest distance of the mirror image of one of its vertices to
 the surface, and its confidence is multiplied by `min(1, (a/a0)²)`. And the shape of a
