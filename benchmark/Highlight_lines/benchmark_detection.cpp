@@ -6,7 +6,9 @@
 // Curves: dents and bumps of radius 5 mean edge lengths (ē) and height h·ē, four per mesh,
 // injected at random (seeded):
 //   - into a smooth car hood, irregularly triangulated (jittered 80 x 80 grid, 12,800
-//     triangles), 8 seeds: every region found is either a defect or a false alarm;
+//     triangles), 8 seeds: every region found is either a defect or a false alarm; the same
+//     on a regular grid (a CAD tessellation: the lines are straight to the rounding) and on a
+//     flat plate (a regular grid);
 //   - anywhere into every shared real mesh (see shared_table()): recall, precision counting
 //     every region without a defect as false, the rank of the defects, the regions found on
 //     the mesh as it is, and time and memory against one compute_highlight_lines().
@@ -179,13 +181,15 @@ void print_curve(const std::string& name, const std::vector<Curve_point>& points
   }
 }
 
-void hood_curve()
+// Four defects per mesh on an 80 x 80 grid over [-1, 1]^2 of `height`, jittered by `jitter`
+// of a cell (0: a regular grid, as CAD tessellations often are), 8 seeds.
+void grid_curve(const std::string& name, double (*height)(double, double), double jitter)
 {
   std::vector<Curve_point> curve(heights.size() + 1);
   for (unsigned seed = 1; seed <= 8; ++seed)
     for (std::size_t i = 0; i <= heights.size(); ++i) {
       HB::Mesh mesh =
-          test::to_mesh<HB::Mesh>(test::grid(80, 2.0 / 80, -1, -1, test::hood, 0.3, seed));
+          test::to_mesh<HB::Mesh>(test::grid(80, 2.0 / 80, -1, -1, height, jitter, seed));
       std::vector<HB::Injected_defect> defects;
       if (i < heights.size())
         defects = HB::inject_defects(mesh, 4, 5.0, heights[i], seed, [](auto) { return true; });
@@ -195,7 +199,12 @@ void hood_curve()
       curve[i].regions += s.regions;
       curve[i].true_regions += s.true_regions;
     }
-  print_curve("smooth hood; last row: no defect (false alarms)", curve, 8, 0);
+  print_curve(name + "; last row: no defect (false alarms)", curve, 8, 0);
+}
+
+double flat(double, double)
+{
+  return 0;
 }
 
 // The table on the shared real meshes. Per mesh: the regions found on the mesh as it is (none
@@ -796,7 +805,9 @@ void curves(const std::vector<std::string>& meshes, unsigned seeds, bool hood)
 {
   if (hood) {
     std::cout << "Detection recall and precision vs defect height h (radius 5 ē)\n";
-    hood_curve();
+    grid_curve("smooth hood", test::hood, 0.3);
+    grid_curve("smooth hood, regular grid", test::hood, 0);
+    grid_curve("flat plate, regular grid", flat, 0);
   }
   std::cout << "\nShared meshes: dents and bumps of radius 5 ē anywhere on the surface, " << seeds
             << " x 4 per height\n";
