@@ -1460,6 +1460,41 @@ TEST(DetectAndFair, FairsTheDemoRoofDentAndLeavesTheDesignAlone)
   }
 }
 
+// The automatic mode on a dent in a flat plate (a regular 40 x 40 grid): the dent is found as a
+// defect and faired, nothing far from it moves. Measured: the RMS distance to the undented
+// plate 0.0021 -> 0.0003 (3 iterations, CONVERGED) on each seed; before the tie of the plate's
+// principal axes was left out of the mirror symmetry, the dent was design and skipped.
+TEST(DetectAndFair, RepairsADentOnAFlatPlate)
+{
+  for (unsigned seed : {1u, 2u, 3u}) {
+    const HB::Mesh undented = test::to_mesh<HB::Mesh>(
+        test::grid(40, 2.0 / 40, -1, -1, [](double, double) { return 0.0; }));
+    HB::Mesh mesh = undented;
+    const auto defects = HB::inject_defects(mesh, 1, 4.0, 0.5, seed, [](auto) { return true; });
+    ASSERT_EQ(defects.size(), 1u);
+    const HB::Mesh dented = mesh;
+    auto rms_to_undented = [&](const HB::Mesh& m) {
+      double sum = 0;
+      for (auto v : vertices(m))
+        sum += CGAL::squared_distance(m.point(v), undented.point(v));
+      return std::sqrt(sum / double(num_vertices(m)));
+    };
+    const auto repairs = CGAL::detect_and_fair_highlight_line_irregularities(
+        mesh, HL::default_light_setup(mesh, HLP::number_of_lines(30)));
+    std::size_t repaired = 0;
+    for (const auto& r : repairs)
+      repaired += r.repaired;
+    EXPECT_GE(repaired, 1u) << "seed " << seed;
+    EXPECT_LT(rms_to_undented(mesh), 0.3 * rms_to_undented(dented)) << "seed " << seed;
+    std::size_t moved_far = 0; // vertices farther than 4R from the dent that moved
+    for (auto v : vertices(mesh))
+      moved_far += CGAL::squared_distance(dented.point(v), defects[0].centre) >
+                       std::pow(4 * defects[0].radius, 2) &&
+                   mesh.point(v) != dented.point(v);
+    EXPECT_EQ(moved_far, 0u) << "seed " << seed;
+  }
+}
+
 TEST(DetectAndFair, RejectsAMinimumConfidenceOutOfItsDomain)
 {
   HB::vertex_descriptor centre;
