@@ -150,8 +150,8 @@ defect breaks the symmetry by its height. The surface is mirror symmetric about 
 planes through the centroid of its vertices normal to their principal axes (a mirror plane is
 one of them; an axis whose variance is within 5 % of the largest of another's is not tried: the
 axes of such a tie, a square plate's, are set by whatever breaks it, a dent on the plate
-included, which then lies on the plane) if three quarters of the vertices have their mirror image within `ē/10` of the
-surface; its own asymmetry `a0` is the 99th percentile of those distances, at least `ē/50`.
+included, which then lies on the plane) if three quarters of the vertices have their mirror
+image within `ē/10` of the surface; its own asymmetry `a0` is the 99th percentile of those distances, at least `ē/50`.
 A region's asymmetry `a` is the largest distance of the mirror image of one of its vertices to
 the surface, and its confidence is multiplied by `min(1, (a/a0)²)`. And the shape of a
 region that holds anomalies near asymmetric vertices (farther than `a0` from their mirror

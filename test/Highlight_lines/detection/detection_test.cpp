@@ -35,6 +35,13 @@ namespace HLI = CGAL::Highlight_lines::internal;
 namespace HLP = CGAL::Highlight_lines::parameters;
 using HLI::vector3::Vec3;
 
+// A flat plate: a regular grid of 40 x 40 cells over [-1, 1]^2.
+HB::Mesh flat_plate()
+{
+  return test::to_mesh<HB::Mesh>(
+      test::grid(40, 2.0 / 40, -1, -1, [](double, double) { return 0.0; }));
+}
+
 // An irregularly triangulated car hood (jittered grid of 80 x 80 cells over [-1, 1]^2).
 HB::Mesh smooth_hood(unsigned seed, int n = 80)
 {
@@ -1123,8 +1130,7 @@ TEST(LocalResidual, FindsOnlyTheDefectsOnARegularGrid)
 TEST(LocalResidual, FindsADentOnAFlatPlateAsADefect)
 {
   for (unsigned seed : {1u, 2u, 3u}) {
-    HB::Mesh mesh = test::to_mesh<HB::Mesh>(
-        test::grid(40, 2.0 / 40, -1, -1, [](double, double) { return 0.0; }));
+    HB::Mesh mesh = flat_plate();
     const auto defects = HB::inject_defects(mesh, 1, 4.0, 0.2, seed, [](auto) { return true; });
     ASSERT_EQ(defects.size(), 1u);
     const Mirror_symmetry_of_mesh mirror(mesh);
@@ -1139,8 +1145,7 @@ TEST(LocalResidual, FindsADentOnAFlatPlateAsADefect)
     EXPECT_GE(found[0].confidence, 0.5) << "seed " << seed << ": " << HB::describe(found[0]);
     EXPECT_LT(found[0].score, 1e3) << "seed " << seed;
   }
-  HB::Mesh shallow =
-      test::to_mesh<HB::Mesh>(test::grid(40, 2.0 / 40, -1, -1, [](double, double) { return 0.0; }));
+  HB::Mesh shallow = flat_plate();
   HB::inject_defects(shallow, 1, 4.0, 0.05, 1, [](auto) { return true; });
   for (const auto& r : detect_local_residual(shallow, true))
     EXPECT_LT(r.score, 1e3) << HB::describe(r);
@@ -1467,8 +1472,7 @@ TEST(DetectAndFair, FairsTheDemoRoofDentAndLeavesTheDesignAlone)
 TEST(DetectAndFair, RepairsADentOnAFlatPlate)
 {
   for (unsigned seed : {1u, 2u, 3u}) {
-    const HB::Mesh undented = test::to_mesh<HB::Mesh>(
-        test::grid(40, 2.0 / 40, -1, -1, [](double, double) { return 0.0; }));
+    const HB::Mesh undented = flat_plate();
     HB::Mesh mesh = undented;
     const auto defects = HB::inject_defects(mesh, 1, 4.0, 0.5, seed, [](auto) { return true; });
     ASSERT_EQ(defects.size(), 1u);

@@ -160,7 +160,7 @@ public:
     for (double d : setup_deviations)
       if (d > 0)
         known.push_back(d);
-    double floor = 1e-300;
+    double floor = 0; // minimum_noise_in_levels bounds every noise from below
     if (!known.empty()) {
       std::nth_element(known.begin(), known.begin() + std::ptrdiff_t(known.size() / 2),
                        known.end());
@@ -168,7 +168,7 @@ public:
     } else {
       // No setup has samples enough to tell its noise (a small mesh, short lines): half that of
       // all the scored samples together; with too few of those, no sample can be told apart
-      // from the noise (the scores would be offsets over 1e-300).
+      // from the noise.
       std::vector<double> values;
       for (const Scored_sample& sample : samples)
         values.push_back(sample.value);
