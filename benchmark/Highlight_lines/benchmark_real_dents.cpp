@@ -74,6 +74,9 @@
 //              ...); conv: report.converged(), xu_flow: its convergence flag; pmp_fair: its
 //              return value
 //   iters      iterations (pmp_fair: 1); the summaries give the median and the maximum
+//   fact       sparse factorisations: ours, the QP solver's summed over the iterations
+//              (Box_QP_report::factorizations); pmp_fair, one LU; xu_flow, one LU per step;
+//              the summaries give the median
 //   rms/depth  RMS distance of the movable vertices to the undented surface / dent depth
 //              (fairing_quality.h); the `input` row is the dented input (doing nothing)
 //   dev/ē      RMS distance of the highlight nodes inside the region to the undented surface's
@@ -163,7 +166,7 @@ struct Outcome
   std::string reason;
   bool converged = false;
   std::string status; // ours only
-  std::size_t iterations = 0;
+  std::size_t iterations = 0, factorizations = 0;
   double seconds = 0, x_pmp = 0; // medians; x_pmp <= 0: not available
   double rms_depth = 0, line_deviation = 0, willmore = 0;
   std::size_t flips = 0, outside_moved = 0;
@@ -176,7 +179,7 @@ struct Run
   std::string reason;
   bool converged = false;
   std::string status;
-  std::size_t iterations = 0;
+  std::size_t iterations = 0, factorizations = 0;
 };
 
 Run run_method(Method method, const HB::Real_dent_case& c,
@@ -187,6 +190,7 @@ Run run_method(Method method, const HB::Real_dent_case& c,
   case PMP_FAIR:
   case PMP_FAIR_C2:
     run.iterations = 1;
+    run.factorizations = 1;
     run.converged = CGAL::Polygon_mesh_processing::fair(
         mesh, movable, CGAL::parameters::fairing_continuity(method == PMP_FAIR ? 1u : 2u));
     if (!run.converged) {
@@ -197,6 +201,7 @@ Run run_method(Method method, const HB::Real_dent_case& c,
   case XU_FLOW: {
     const HB::Surface_diffusion_flow_report r = HB::surface_diffusion_flow(mesh, c.region);
     run.iterations = r.iterations;
+    run.factorizations = r.iterations;
     run.converged = r.converged;
     break;
   }
@@ -209,6 +214,8 @@ Run run_method(Method method, const HB::Real_dent_case& c,
                                                       ? HL::Fairness_energy::MEAN_CURVATURE
                                                       : HL::Fairness_energy::WILLMORE));
     run.iterations = r.iterations;
+    for (const HL::Fairing_report::Iteration& step : r.history)
+      run.factorizations += step.solver.factorizations;
     run.status = HL::to_string(r.status);
     run.converged = r.converged();
     break;
@@ -285,6 +292,7 @@ Outcome evaluate(Method method, const HB::Real_dent_case& c, const HB::Region_in
   o.converged = run.converged;
   o.status = run.status;
   o.iterations = run.iterations;
+  o.factorizations = run.factorizations;
   if (!o.produced)
     return o;
   o.seconds = median(times);
@@ -330,7 +338,7 @@ struct Summary
 {
   std::size_t cases = 0, produced = 0, converged = 0, flips = 0, flips_of_folded = 0, outside = 0,
               worse_than_input = 0;
-  std::vector<double> iterations, rms_depth, line_deviation, x_pmp;
+  std::vector<double> iterations, factorizations, rms_depth, line_deviation, x_pmp;
 };
 
 void print_case(std::ostream& out, const HB::Real_dent_case& c, const HB::Region_info<Mesh>& info,
@@ -384,15 +392,16 @@ void print_case(std::ostream& out, const HB::Real_dent_case& c, const HB::Region
       << fixed(quality.smallest_corner_degrees, 2) << "°, " << quality.slivers << " below 5°, "
       << quality.folded.size() << " folded"
       << "\n\n";
-  out << "| method | produced | status | conv | iters | rms/depth | dev/ē | willmore | flips | "
-         "outside | ms | x pmp | reason |\n"
-      << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  out << "| method | produced | status | conv | iters | fact | rms/depth | dev/ē | willmore | "
+         "flips | outside | ms | x pmp | reason |\n"
+      << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   // `outside` is not shown for the truth: there it counts the dented vertices not movable.
   auto row = [&](const char* name, const Outcome& o, bool timed) {
     const bool truth_row = std::strcmp(name, "truth") == 0;
     out << "| " << name << " | " << (o.produced ? "yes" : "no") << " | " << o.status << " | "
         << (timed && o.produced ? (o.converged ? "yes" : "no") : "") << " | "
         << (timed && o.produced ? std::to_string(o.iterations) : "") << " | "
+        << (timed && o.produced ? std::to_string(o.factorizations) : "") << " | "
         << (o.produced ? fixed(o.rms_depth, 4) : "") << " | "
         << (o.produced ? fixed(o.line_deviation, 4) : "") << " | "
         << (o.produced ? general(o.willmore) : "") << " | "
@@ -417,6 +426,7 @@ void add_to_summary(Summary& s, const Outcome& o, const Outcome& input)
   s.worse_than_input += o.rms_depth > input.rms_depth ? 1 : 0;
   s.converged += o.converged ? 1 : 0;
   s.iterations.push_back(double(o.iterations));
+  s.factorizations.push_back(double(o.factorizations));
   s.rms_depth.push_back(o.rms_depth);
   s.line_deviation.push_back(o.line_deviation);
   if (o.x_pmp > 0)
@@ -433,9 +443,10 @@ void print_summary(std::ostream& out, const char* patches,
   out << "\n### Summary, " << patches
       << " patches (medians over the cases where the method produced a mesh)\n\n"
       << "| method | patches | cases | produced % | converged % | median iters | max iters | "
-         "median rms/depth | median dev/ē | median x pmp | total flips | any outside moved | "
+         "median fact | median rms/depth | median dev/ē | median x pmp | total flips | any outside "
+         "moved | "
          "rms > input |\n"
-      << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+      << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const char* name :
        {"input", "pmp_fair", "pmp_fair_c2", "xu_flow", "ours", "ours_mc", "ours_willmore"}) {
     auto it = summaries.find(name);
@@ -451,8 +462,9 @@ void print_summary(std::ostream& out, const char* patches,
         << (is_input || s.iterations.empty() ? ""
                                              : std::to_string(std::size_t(*std::max_element(
                                                    s.iterations.begin(), s.iterations.end()))))
-        << " | " << fixed(median(s.rms_depth), 4) << " | " << fixed(median(s.line_deviation), 4)
-        << " | " << (is_input ? "" : fixed(median(s.x_pmp), 2)) << " | "
+        << " | " << (is_input ? "" : fixed(median(s.factorizations), 1)) << " | "
+        << fixed(median(s.rms_depth), 4) << " | " << fixed(median(s.line_deviation), 4) << " | "
+        << (is_input ? "" : fixed(median(s.x_pmp), 2)) << " | "
         << flips_text(s.flips, s.flips_of_folded) << " | "
         << (is_input ? "" : (s.outside > 0 ? "YES (" + std::to_string(s.outside) + ")" : "no"))
         << " | " << (is_input ? "" : std::to_string(s.worse_than_input)) << " |\n";
@@ -465,7 +477,9 @@ void print_legend(std::ostream& out)
          "normals within 45° of the lights' normal; the others are the smoothest rough patches "
          "of meshes with too few smooth ones); rms/depth: RMS distance of the movable vertices "
          "to the undented surface / dent depth; dev/ē: RMS distance of the highlight nodes "
-         "inside the region to the undented surface's lines, in local mean edge lengths; x pmp: "
+         "inside the region to the undented surface's lines, in local mean edge lengths; fact: "
+         "sparse factorisations (ours: the QP solver's over all iterations; pmp_fair: one LU; "
+         "xu_flow: one LU per step); x pmp: "
          "median time / PMP::fair's median time on the same case; rms > input: cases where the "
          "method ended further from the undented surface than the dented input; status: "
          "HL::to_string(Fairing_report::Status), conv: converged)\n";
