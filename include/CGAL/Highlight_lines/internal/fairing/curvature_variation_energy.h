@@ -194,33 +194,40 @@ vertices_on_sharp_edges(const std::vector<std::array<double, 3>>& positions,
     const double length = std::sqrt(dot(n, n));
     return length > 0 ? (1 / length) * n : n;
   };
-  // The triangle sides sorted by edge (a sorted array rather than a map: this runs on every
-  // triangle of the fairing's local mesh); each later triangle of an edge is compared with its
-  // first.
+  // The triangle sides grouped by their smaller vertex (a counting sort, stable in the
+  // triangle order: this runs on every triangle of the fairing's local mesh); within a group,
+  // each later triangle of an edge is compared with its first.
   struct Side
   {
-    int a, b;
+    int b;
     std::size_t triangle;
   };
-  std::vector<Side> sides;
-  sides.reserve(3 * triangles.size());
-  for (std::size_t i = 0; i < triangles.size(); ++i)
-    for (int c = 0; c < 3; ++c) {
-      const auto [a, b] =
-          std::minmax(triangles[i][std::size_t(c)], triangles[i][std::size_t((c + 1) % 3)]);
-      sides.push_back({a, b, i});
-    }
-  std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) {
-    return std::tie(x.a, x.b, x.triangle) < std::tie(y.a, y.b, y.triangle);
-  });
-  for (std::size_t first = 0, next; first < sides.size(); first = next) {
-    for (next = first + 1;
-         next < sides.size() && sides[next].a == sides[first].a && sides[next].b == sides[first].b;
-         ++next)
-      if (dot(unit_normal(triangles[sides[first].triangle]),
-              unit_normal(triangles[sides[next].triangle])) < cos_sharp)
-        on_sharp_edge[std::size_t(sides[first].a)] = on_sharp_edge[std::size_t(sides[first].b)] = 1;
+  std::vector<int> group_start(positions.size() + 1, 0);
+  for (const auto& t : triangles)
+    for (int c = 0; c < 3; ++c)
+      ++group_start[std::size_t((std::min)(t[std::size_t(c)], t[std::size_t((c + 1) % 3)])) + 1];
+  for (std::size_t v = 0; v < positions.size(); ++v)
+    group_start[v + 1] += group_start[v];
+  std::vector<Side> sides(std::size_t(group_start.back()));
+  {
+    std::vector<int> next(group_start.begin(), group_start.end() - 1);
+    for (std::size_t i = 0; i < triangles.size(); ++i)
+      for (int c = 0; c < 3; ++c) {
+        const auto [a, b] =
+            std::minmax(triangles[i][std::size_t(c)], triangles[i][std::size_t((c + 1) % 3)]);
+        sides[std::size_t(next[std::size_t(a)]++)] = {b, i};
+      }
   }
+  for (std::size_t a = 0; a < positions.size(); ++a)
+    for (int p = group_start[a]; p < group_start[a + 1]; ++p) {
+      const Side& side = sides[std::size_t(p)];
+      int first = group_start[a];
+      while (sides[std::size_t(first)].b != side.b)
+        ++first;
+      if (first != p && dot(unit_normal(triangles[sides[std::size_t(first)].triangle]),
+                            unit_normal(triangles[side.triangle])) < cos_sharp)
+        on_sharp_edge[a] = on_sharp_edge[std::size_t(side.b)] = 1;
+    }
   return on_sharp_edge;
 }
 
