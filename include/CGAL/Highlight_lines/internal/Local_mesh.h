@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -52,6 +53,18 @@ public:
       if (slots_[s].key == key)
         return slots_[s].id;
     }
+  }
+
+  // Makes room for `n` keys at once (hashed storage): a fairing's local mesh knows about how
+  // many it will insert, and growing from 64 slots rehashed them all about twice.
+  void reserve(std::size_t n)
+  {
+    if (dense_ || 2 * n <= slots_.size())
+      return;
+    std::size_t capacity = 64;
+    while (capacity < 2 * n)
+      capacity *= 2;
+    rehash(capacity);
   }
 
   // Returns the id of `key`, assigning `next` if it has none yet.
@@ -94,11 +107,12 @@ private:
     return std::size_t((std::uint64_t(key) * 0x9E3779B97F4A7C15ull) >> shift_);
   }
 
-  void grow()
+  void grow() { rehash(slots_.empty() ? 64 : 2 * slots_.size()); }
+
+  void rehash(std::size_t capacity)
   {
     std::vector<Slot> old;
     old.swap(slots_);
-    const std::size_t capacity = old.empty() ? 64 : 2 * old.size();
     slots_.assign(capacity, Slot{0, none});
     mask_ = capacity - 1;
     shift_ = 64;
@@ -380,6 +394,12 @@ void build_local_mesh(const TriangleMesh& tm, const FaceRange& faces, bool whole
     return e;
   };
 
+  // A triangle mesh has about half as many vertices and 1.5 times as many edges as faces; the
+  // one-ring closure adds a ring of faces.
+  const std::size_t range_size = std::size_t(std::distance(std::begin(faces), std::end(faces)));
+  face_ids.reserve(range_size + range_size / 4);
+  vertex_ids.reserve(range_size / 2 + range_size / 8);
+  edge_ids.reserve(range_size + range_size / 2);
   for (face_descriptor f : faces) {
     if (f == boost::graph_traits<TriangleMesh>::null_face())
       throw Invalid_input(Problem::FACE_NOT_IN_MESH, "the face range contains a null face");
