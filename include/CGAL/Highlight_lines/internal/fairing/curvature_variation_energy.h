@@ -49,12 +49,12 @@
 
 #include <CGAL/Highlight_lines/internal/fairing/mean_curvature_fit.h>
 #include <CGAL/Highlight_lines/internal/fairing/willmore_energy.h>
+#include <CGAL/Highlight_lines/internal/qp/bucket_sort.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -194,30 +194,27 @@ vertices_on_sharp_edges(const std::vector<std::array<double, 3>>& positions,
     const double length = std::sqrt(dot(n, n));
     return length > 0 ? (1 / length) * n : n;
   };
-  // The triangle sides grouped by their smaller vertex (a counting sort, stable in the
-  // triangle order: this runs on every triangle of the fairing's local mesh); within a group,
-  // each later triangle of an edge is compared with its first.
+  // The triangle sides grouped by their smaller vertex (a stable counting sort, in triangle
+  // order: this runs on every triangle of the fairing's local mesh); within a group, each later
+  // triangle of an edge is compared with its first.
   struct Side
   {
-    int b;
-    std::size_t triangle;
+    int b = 0;
+    std::size_t triangle = 0;
   };
-  std::vector<int> group_start(positions.size() + 1, 0);
-  for (const auto& t : triangles)
-    for (int c = 0; c < 3; ++c)
-      ++group_start[std::size_t((std::min)(t[std::size_t(c)], t[std::size_t((c + 1) % 3)])) + 1];
-  for (std::size_t v = 0; v < positions.size(); ++v)
-    group_start[v + 1] += group_start[v];
-  std::vector<Side> sides(std::size_t(group_start.back()));
-  {
-    std::vector<int> next(group_start.begin(), group_start.end() - 1);
-    for (std::size_t i = 0; i < triangles.size(); ++i)
-      for (int c = 0; c < 3; ++c) {
-        const auto [a, b] =
-            std::minmax(triangles[i][std::size_t(c)], triangles[i][std::size_t((c + 1) % 3)]);
-        sides[std::size_t(next[std::size_t(a)]++)] = {b, i};
-      }
-  }
+  std::vector<int> group_start;
+  std::vector<Side> sides;
+  bucket_sort(
+      int(positions.size()),
+      [&](auto&& emit) {
+        for (std::size_t i = 0; i < triangles.size(); ++i)
+          for (int c = 0; c < 3; ++c) {
+            const auto [a, b] =
+                std::minmax(triangles[i][std::size_t(c)], triangles[i][std::size_t((c + 1) % 3)]);
+            emit(a, Side{b, i});
+          }
+      },
+      group_start, sides);
   for (std::size_t a = 0; a < positions.size(); ++a)
     for (int p = group_start[a]; p < group_start[a + 1]; ++p) {
       const Side& side = sides[std::size_t(p)];
