@@ -39,8 +39,9 @@ of the highlight-line fairing.
 <b>Method</b> (in detail: \ref hl_solver_method in the manual). A
 primal-dual active-set method (the semismooth Newton method of Hintermüller, Ito and Kunisch
 for box constraints) whose iterations each solve one sparse linear system over the free
-variables. A cold start with 2000 variables or more first looks for the active bounds by
-gradient projection (Moré and Toraldo); a cold start also takes primal active-set steps that
+variables. A problem of 2000 variables or more first looks for the active bounds by
+gradient projection (Moré and Toraldo; a warm start is first checked by one projected step,
+and kept if that moves few variables); a cold start also takes primal active-set steps that
 activate the bounds in the order the step crosses them. The systems are solved with a
 supernodal \f$ LDL^T \f$ factorisation in a fill-reducing ordering, analysed once per sparsity
 pattern (reuse the solver object in an iterative method), and bordered by the changed
@@ -817,15 +818,16 @@ private:
   // large smooth regions the free subsystems are ill-conditioned and it stops at its budget
   // (a fraction of a factorisation's cost), having found what it could.
 
-  // A warm start of an iterative method (a factorisation of the last program at hand) is left
-  // to the active-set iterations preconditioned by that factorisation: measured on the
-  // fairing (programs of 10^4 variables with some 10 to 100 active bounds), the projected
-  // steps moved the bounds that matter around and took 13 factorisations per fairing
-  // instead of 5.
+  // Also with the factorisation of the last program at hand (a reused solver, warm-started):
+  // a warm start whose first projected step moves few variables is left to the active-set
+  // iterations preconditioned by that factorisation (the fairing's programs, some 10 to 100
+  // active bounds: one step of ~1 % of a factorisation each, same iterates), while a warm
+  // start far from the face is corrected by the projection, as a new solver's would be
+  // (fairing-like programs of 10^4 and 10^5 variables, 20 % of bounds active, warm-started
+  // from a nearby program's solution: 4 to 7 factorisations before, 1 to 2 now).
   bool use_gradient_projection() const
   {
-    return use_gradient_projection_ && problem_.size() >= gradient_projection_minimum_size_ &&
-           !has_factorization_;
+    return use_gradient_projection_ && problem_.size() >= gradient_projection_minimum_size_;
   }
 
   // Runs the phase from x_ (with start_ on the active bounds of the states); on return

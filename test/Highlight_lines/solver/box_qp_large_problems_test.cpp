@@ -571,6 +571,29 @@ TEST(BoxQPGradientProjection, WarmStartsGiveTheResultOfTheActiveSetPath)
   expect_same_optimum_both_ways(grid.Q, problem.c, l, u, poor_reused, poor_without);
 }
 
+TEST(BoxQPGradientProjection, ReusedSolverCorrectsAPoorWarmStartByProjection)
+{
+  // The next program of an iterative method, with the last factorisation at hand, but
+  // warm-started far from its face (the solution of another scattered problem): the projected
+  // steps find the face, as a new solver's do, instead of many active-set iterations
+  // preconditioned by that factorisation.
+  const Grid_problem grid(large_side(90), 19);
+  const Scattered_solution problem(grid, 0.2, 20), other(grid, 0.2, 21);
+  const Eigen::VectorXd l = -grid.bound, u = grid.bound;
+  const std::vector<double> poor(other.x.data(), other.x.data() + grid.n);
+  Active_set_box_QP_solver reused, reused_without;
+  solve_box(grid.Q, other.c, l, u, true, nullptr, &reused);
+  solve_box(grid.Q, other.c, l, u, false, nullptr, &reused_without);
+  const Result with = solve_box(grid.Q, problem.c, l, u, true, &poor, &reused);
+  const Result without = solve_box(grid.Q, problem.c, l, u, false, &poor, &reused_without);
+  const Result fresh = solve_box(grid.Q, problem.c, l, u, true, &poor);
+  expect_same_optimum_both_ways(grid.Q, problem.c, l, u, with, without);
+  expect_same_optimum_both_ways(grid.Q, problem.c, l, u, with, fresh);
+  EXPECT_GT(with.report.projection_steps, 0u);
+  EXPECT_LE(with.report.factorizations, fresh.report.factorizations);
+  EXPECT_LT(with.report.factorizations, without.report.factorizations);
+}
+
 TEST(BoxQPGradientProjection, DegenerateBoundsGiveTheResultOfTheActiveSetPath)
 {
   const Grid_problem grid(50, 17); // 2500 variables: enough for the gradient projection
