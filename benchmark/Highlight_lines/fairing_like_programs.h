@@ -26,6 +26,7 @@
 #include <Eigen/Sparse>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 #include <utility>
@@ -79,8 +80,25 @@ struct Fairing_like_patch
     std::vector<Eigen::Triplet<double>> laplacian;
     std::vector<double> area(all, 0.), shortest(all, 1e300);
     std::vector<std::vector<int>> ring_of(all);
+    // The triangles and edges in an order of their vertex ids, not of the triangulation's
+    // storage: the insertion order of the points (a spatial sort drawing from CGAL's default
+    // random generator, which earlier patches of the same process advanced) would otherwise
+    // change the order of the sums below, and with it the last bits of the program and the
+    // solver's path on it (a benchmark's counts depended on which patches it made first).
+    std::vector<std::array<int, 3>> triangles;
     for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
-      const int id[3] = {f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
+      std::array<int, 3> t = {f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
+      std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end()); // same orientation
+      triangles.push_back(t);
+    }
+    std::sort(triangles.begin(), triangles.end());
+    std::vector<std::pair<int, int>> edges;
+    for (const auto& t : triangles)
+      for (int e = 0; e < 3; ++e)
+        edges.emplace_back(std::min(t[e], t[(e + 1) % 3]), std::max(t[e], t[(e + 1) % 3]));
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    for (const auto& id : triangles) {
       const double face_area =
           std::abs(CGAL::area(position[id[0]], position[id[1]], position[id[2]]));
       for (int e = 0; e < 3; ++e) {
@@ -109,9 +127,7 @@ struct Fairing_like_patch
 
     // Highlight nodes: edges crossing the level lines of a linear "distance" function.
     std::vector<Eigen::Triplet<double>> nodes;
-    for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
-      const int a = e->first->vertex((e->second + 1) % 3)->info();
-      const int b = e->first->vertex((e->second + 2) % 3)->info();
+    for (const auto& [a, b] : edges) {
       const auto level = [&](int v) {
         return std::floor(7. * position[v].x() + 3. * position[v].y());
       };

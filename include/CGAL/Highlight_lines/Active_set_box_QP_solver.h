@@ -824,7 +824,7 @@ private:
   // active bounds: one step of ~1 % of a factorisation each, same iterates), while a warm
   // start far from the face is corrected by the projection, as a new solver's would be
   // (fairing-like programs of 10^4 and 10^5 variables, 20 % of bounds active, warm-started
-  // from a nearby program's solution: 4 to 7 factorisations before, 1 to 2 now).
+  // from a nearby program's solution: 4 to 7 factorisations before, one now).
   bool use_gradient_projection() const
   {
     return use_gradient_projection_ && problem_.size() >= gradient_projection_minimum_size_;
