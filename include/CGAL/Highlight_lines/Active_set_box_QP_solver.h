@@ -845,7 +845,11 @@ private:
     const Eigen::Index n = l.size();
     if (n == 0 || !(diagonal.minCoeff() > 0.))
       return false; // a zero or negative diagonal: leave it to the factorisations
-    update_analysis();
+    // The budget below needs an analysis' flop count. With the last factorisation at hand
+    // (a warm start) that analysis serves, even if the pattern grew: analysing now would
+    // discard the factorisation that preconditions the active-set iterations.
+    if (!has_factorization_)
+      update_analysis();
     // A product with P streams the matrix from memory; the dense kernels of a factorisation
     // run about three times faster per flop.
     const double product_flops = 3. * (2. * double(P.nonZeros()) + 10. * double(n));

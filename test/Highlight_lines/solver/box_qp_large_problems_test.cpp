@@ -341,6 +341,22 @@ TEST(BoxQPLargeProblems, WarmStartOnANearbyMatrixIsPreconditionedByTheLastFactor
   EXPECT_GE(cold.report.factorizations, 1u);
 }
 
+TEST(BoxQPLargeProblems, WarmStartOnAGrownPatternIsPreconditionedByTheLastFactorisation)
+{
+  // As above, but the next program's matrix has entries the last one lacked (a new pattern
+  // to analyse): the last factorisation, laid out for the old pattern, still preconditions
+  // conjugate gradients before anything is analysed or factorised anew.
+  const Grid_problem grid(large_side(150), 6, 0., false), next_grid(large_side(150), 6, 0.02);
+  ASSERT_LT(grid.Q.nonZeros(), next_grid.Q.nonZeros());
+  const Known_solution problem(grid, 0.1, 0.), next(next_grid, 0.1, 0.);
+  Active_set_box_QP_solver solver;
+  const Result first = solve(solver, grid, problem);
+  expect_known_solution(grid, problem, first);
+  const Result warm = solve(solver, next_grid, next, &first.x);
+  expect_known_solution(next_grid, next, warm);
+  EXPECT_EQ(warm.report.factorizations, 0u);
+}
+
 TEST(BoxQPLargeProblems, MonotonePhaseAloneSolvesAFairingLikeProblem)
 {
   const Grid_problem grid(40, 5);
