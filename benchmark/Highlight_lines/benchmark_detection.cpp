@@ -459,6 +459,15 @@ std::string region_geometry(const HB::Mesh& mesh, const HB::Irregularity& region
 //                to the detection, which breaks the lines there and drops anomalies near them);
 //   by design    if not, and a region of the undented mesh reaches within 2R of it;
 //   unseen       otherwise.
+// Whatever the cause, a missed defect is also counted as
+//   silent       if its lines show no peak of their own: no region of a permissive detection
+//                (minimum_evidence 1e-6, so that the anomalies of a single light setup make a
+//                region) has its strongest anomaly within R of the defect's centre. A silent
+//                defect is missed by the scoring (its offsets stay below detection_threshold
+//                times the noise), whatever the grouping does; a mis-centred or by-design one
+//                that is silent only lies next to a region of the design. It is an upper
+//                bound: where a stronger region's disc takes a defect's anomalies whole, the
+//                defect has no peak of its own either.
 // Each missed defect is listed with the sharp edges near it before and after injection.
 std::size_t sharp_edges_near(const HB::Mesh& mesh, const HB::Point& centre, double radius)
 {
@@ -476,6 +485,26 @@ std::size_t sharp_edges_near(const HB::Mesh& mesh, const HB::Point& centre, doub
   return count;
 }
 
+// Per defect, whether a permissive detection (see misses_table()) has a region whose strongest
+// anomaly lies within the defect's radius of its centre.
+std::vector<bool> defects_with_own_peak(const HB::Mesh& mesh,
+                                        const std::vector<HB::Injected_defect>& defects)
+{
+  std::vector<HB::Irregularity> found;
+  CGAL::detect_highlight_line_irregularities(
+      mesh, HL::default_light_setup(mesh, HLP::number_of_lines(30)), std::back_inserter(found),
+      HLP::minimum_evidence(HLP::number_of_scales(HLP::local_residual(local_residual), scales),
+                            1e-6));
+  std::vector<bool> peaked(defects.size(), false);
+  for (std::size_t d = 0; d < defects.size(); ++d)
+    for (const auto& region : found)
+      peaked[d] =
+          peaked[d] || (region.peak_vertex != HB::Mesh::null_vertex() &&
+                        CGAL::squared_distance(mesh.point(region.peak_vertex), defects[d].centre) <=
+                            defects[d].radius * defects[d].radius);
+  return peaked;
+}
+
 void misses_table(const std::string& name, unsigned seeds)
 {
   HB::Mesh original;
@@ -484,18 +513,21 @@ void misses_table(const std::string& name, unsigned seeds)
   const auto own = detect(original);
   const auto own_vertices = HB::vertices_of_regions(original, own);
   std::cout << "\n" << name << ": defects not located, and why\n";
-  std::cout << "  h/ē   defects  located  mis-centred (by design)  folded  by design  unseen\n";
+  std::cout
+      << "  h/ē   defects  located  mis-centred (by design)  folded  by design  unseen  silent\n";
   std::ostringstream details;
   for (double h : {1.0, 0.5, 0.2, 0.1}) {
     std::size_t defects = 0, located = 0;
     std::array<std::size_t, 4> causes{0, 0, 0, 0}; // mis-centred, folded, by design, unseen
     std::size_t miscentred_by_design = 0;          // mis-centred next to an undented region
+    std::size_t silent = 0;                        // missed, without a peak of their own
     for (unsigned seed = 1; seed <= seeds; ++seed) {
       HB::Mesh mesh = original;
       const auto injected = HB::inject_defects(mesh, 4, 5.0, h, seed, [](auto) { return true; });
       const auto found = detect(mesh);
       const auto holds = HB::regions_of_defects(mesh, injected, found);
       const auto is_located = HB::located_defects(mesh, injected, found);
+      const auto own_peak = defects_with_own_peak(mesh, injected);
       for (std::size_t d = 0; d < injected.size(); ++d) {
         ++defects;
         if (is_located[d]) {
@@ -518,14 +550,15 @@ void misses_table(const std::string& name, unsigned seeds)
                           : design_region != std::size_t(-1) ? 2
                                                              : 3;
         ++causes[std::size_t(cause)];
+        silent += !own_peak[d];
         miscentred_by_design += cause == 0 && design_region != std::size_t(-1);
         const char* why = cause == 0   ? "mis-centred"
                           : cause == 1 ? "folded"
                           : cause == 2 ? "by design"
                                        : "unseen";
         details << "  h " << h << ", seed " << seed << ", " << (defect.height < 0 ? "dent" : "bump")
-                << " " << d << ": " << why << "; sharp edges within 2R " << before << " -> "
-                << after;
+                << " " << d << ": " << why << (own_peak[d] ? "" : ", silent")
+                << "; sharp edges within 2R " << before << " -> " << after;
         if (holds[d] != std::size_t(-1))
           details << "; held by region " << holds[d] + 1 << " of " << found.size() << " ["
                   << HB::describe(found[holds[d]]) << "]"
@@ -539,7 +572,8 @@ void misses_table(const std::string& name, unsigned seeds)
     std::cout << "  " << std::setw(4) << h << "  " << std::setw(7) << defects << "  "
               << std::setw(7) << located << "  " << std::setw(11) << causes[0] << " ("
               << std::setw(9) << miscentred_by_design << ")  " << std::setw(6) << causes[1] << "  "
-              << std::setw(9) << causes[2] << "  " << std::setw(6) << causes[3] << "\n"
+              << std::setw(9) << causes[2] << "  " << std::setw(6) << causes[3] << "  "
+              << std::setw(6) << silent << "\n"
               << std::flush;
   }
   std::cout << details.str() << std::flush;
