@@ -149,13 +149,25 @@ int scales = 1;
 // --defect-regions: the shared table lists the region holding each defect.
 bool list_defect_regions = false;
 
-std::vector<HB::Irregularity> detect(const HB::Mesh& mesh)
+// The named parameters of every detection of this benchmark (the measure and the scales).
+auto detection_parameters()
+{
+  return HLP::number_of_scales(HLP::local_residual(local_residual), scales);
+}
+
+// The detection with the default lights (30 lines) and `np`.
+template <typename NamedParameters>
+std::vector<HB::Irregularity> detect(const HB::Mesh& mesh, const NamedParameters& np)
 {
   std::vector<HB::Irregularity> found;
   CGAL::detect_highlight_line_irregularities(
-      mesh, HL::default_light_setup(mesh, HLP::number_of_lines(30)), std::back_inserter(found),
-      HLP::number_of_scales(HLP::local_residual(local_residual), scales));
+      mesh, HL::default_light_setup(mesh, HLP::number_of_lines(30)), std::back_inserter(found), np);
   return found;
+}
+
+std::vector<HB::Irregularity> detect(const HB::Mesh& mesh)
+{
+  return detect(mesh, detection_parameters());
 }
 
 struct Curve_point
@@ -490,11 +502,7 @@ std::size_t sharp_edges_near(const HB::Mesh& mesh, const HB::Point& centre, doub
 std::vector<bool> defects_with_own_peak(const HB::Mesh& mesh,
                                         const std::vector<HB::Injected_defect>& defects)
 {
-  std::vector<HB::Irregularity> found;
-  CGAL::detect_highlight_line_irregularities(
-      mesh, HL::default_light_setup(mesh, HLP::number_of_lines(30)), std::back_inserter(found),
-      HLP::minimum_evidence(HLP::number_of_scales(HLP::local_residual(local_residual), scales),
-                            1e-6));
+  const auto found = detect(mesh, HLP::minimum_evidence(detection_parameters(), 1e-6));
   std::vector<bool> peaked(defects.size(), false);
   for (std::size_t d = 0; d < defects.size(); ++d)
     for (const auto& region : found)
