@@ -80,7 +80,9 @@
 //   rms/depth  RMS distance of the movable vertices to the undented surface / dent depth
 //              (fairing_quality.h); the `input` row is the dented input (doing nothing)
 //   dev/ē      RMS distance of the highlight nodes inside the region to the undented surface's
-//              lines of the same light (deviation_from_reference), in ē
+//              lines of the same light (deviation_from_reference), in ē; on the row "desired",
+//              of the desired (OGH) lines of the mesh the methods start from
+//              (targets_from_reference): where a fairing that met them exactly would end
 //   willmore   discrete Willmore energy of the region (Σ A‖K‖², fairing_quality.h)
 //   flips      faces whose normal turned by more than 90° from the dented input; "(k folded)":
 //              k of them were folded in the input (unfolding one counts as a flip)
@@ -344,7 +346,8 @@ struct Summary
 void print_case(std::ostream& out, const HB::Real_dent_case& c, const HB::Region_info<Mesh>& info,
                 const std::vector<vertex_descriptor>& movable, const std::string& movable_error,
                 const HB::Region_triangle_quality& quality, const Outcome& input,
-                const Outcome& truth, const std::vector<Outcome>& outcomes)
+                const Outcome& truth, double desired_deviation,
+                const std::vector<Outcome>& outcomes)
 {
   const double e = c.mean_edge_length;
   // Dented vertices that no method may move, and the largest of their displacements.
@@ -413,6 +416,7 @@ void print_case(std::ostream& out, const HB::Real_dent_case& c, const HB::Region
   };
   row("input", input, false);
   row("truth", truth, false);
+  out << "| desired | | | | | | | " << fixed(desired_deviation, 4) << " | | | | | | |\n";
   for (int m = 0; m < NUMBER_OF_METHODS; ++m)
     row(method_names[m], outcomes[std::size_t(m)], true);
 }
@@ -447,12 +451,17 @@ void print_summary(std::ostream& out, const char* patches,
          "moved | "
          "rms > input |\n"
       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const char* name :
-       {"input", "pmp_fair", "pmp_fair_c2", "xu_flow", "ours", "ours_mc", "ours_willmore"}) {
+  for (const char* name : {"input", "desired", "pmp_fair", "pmp_fair_c2", "xu_flow", "ours",
+                           "ours_mc", "ours_willmore"}) {
     auto it = summaries.find(name);
     if (it == summaries.end())
       continue;
     const Summary& s = it->second;
+    if (std::strcmp(name, "desired") == 0) {
+      out << "| desired | " << patches << " | " << s.cases << " | | | | | | | "
+          << fixed(median(s.line_deviation), 4) << " | | | | |\n";
+      continue;
+    }
     const bool is_input = std::strcmp(name, "input") == 0;
     const double n = double((std::max)(s.cases, std::size_t(1)));
     out << "| " << name << " | " << patches << " | " << s.cases << " | "
@@ -477,7 +486,8 @@ void print_legend(std::ostream& out)
          "normals within 45° of the lights' normal; the others are the smoothest rough patches "
          "of meshes with too few smooth ones); rms/depth: RMS distance of the movable vertices "
          "to the undented surface / dent depth; dev/ē: RMS distance of the highlight nodes "
-         "inside the region to the undented surface's lines, in local mean edge lengths; fact: "
+         "inside the region to the undented surface's lines, in local mean edge lengths (desired: "
+         "of the desired lines' points); fact: "
          "sparse factorisations (ours: the QP solver's over all iterations; pmp_fair: one LU; "
          "xu_flow: one LU per step); x pmp: "
          "median time / PMP::fair's median time on the same case; rms > input: cases where the "
@@ -708,7 +718,20 @@ int main(int argc, char** argv)
       for (Outcome& o : outcomes)
         if (o.produced && pmp.produced && pmp.seconds > 0)
           o.x_pmp = o.seconds / pmp.seconds;
-      print_case(out, c, info, movable, movable_error, quality, input, truth, outcomes);
+      // How far the desired lines of the mesh the methods start from lie from the truth's.
+      double desired_deviation = std::nan("");
+      try {
+        const Mesh& start = options.from_truth ? c.truth : c.input;
+        desired_deviation =
+            HB::targets_from_reference(c.truth, info, c.lights,
+                                       HB::leveled_desired_highlight_lines(start, info, c.lights))
+                .rms /
+            c.mean_edge_length;
+      } catch (const std::exception&) {
+        // no desired lines (the fairing refuses the region): "-"
+      }
+      print_case(out, c, info, movable, movable_error, quality, input, truth, desired_deviation,
+                 outcomes);
       out.flush();
       const bool deep = c.dent_depth >= 0.99 * c.mean_edge_length;
       for (auto* s : {&summaries, &smooth_summaries, &deep_summaries, &shallow_summaries}) {
@@ -716,6 +739,10 @@ int main(int argc, char** argv)
             (s == &shallow_summaries && deep))
           continue;
         add_to_summary((*s)["input"], input, input);
+        if (std::isfinite(desired_deviation)) {
+          ++(*s)["desired"].cases;
+          (*s)["desired"].line_deviation.push_back(desired_deviation);
+        }
         for (int m = 0; m < NUMBER_OF_METHODS; ++m)
           add_to_summary((*s)[method_names[m]], outcomes[std::size_t(m)], input);
       }

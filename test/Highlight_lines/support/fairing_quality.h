@@ -24,6 +24,9 @@
 //   not measured but counted (`unmatched`).
 // - deviation_from_reference(): the same, against the highlight lines of the same level on a
 //   reference mesh of the same connectivity (the undented surface: the ground truth).
+// - targets_from_reference(): how far the desired lines themselves lie from the reference's
+//   lines of their level (their inner sample points, RMS and max): what a fairing that met its
+//   targets exactly would reach.
 // - willmore_energy_in_region(): the discrete Willmore energy Σ A_i ‖K_i‖² over the vertices
 //   inside R (the package's q_fair: eq. 6–8 with the standard factor ½, A_i = ⅓ ring area).
 //   Dimensionless. mean_curvature_energy_in_region(): its normal part Σ A_i (K_i · N_i)².
@@ -196,11 +199,41 @@ namespace quality_detail {
 template <typename Point_3>
 using Segments_by_level = std::map<long long, std::vector<std::pair<Point_3, Point_3>>>;
 
+template <typename Point_3>
+double squared_distance_to_segments(const Point_3& p,
+                                    const std::vector<std::pair<Point_3, Point_3>>& segments)
+{
+  typedef typename CGAL::Kernel_traits<Point_3>::Kernel K;
+  double best = std::numeric_limits<double>::infinity();
+  for (const auto& s : segments)
+    best = (std::min)(
+        best, CGAL::to_double(CGAL::squared_distance(p, typename K::Segment_3(s.first, s.second))));
+  return best;
+}
+
+// The segments of the lines of `reference` around the region, by level.
+template <typename TriangleMesh, typename GeomTraits>
+Segments_by_level<typename GeomTraits::Point_3>
+reference_segments(const TriangleMesh& reference, const Region_info<TriangleMesh>& info,
+                   const CGAL::Highlight_lines::Light_setup<GeomTraits>& lights)
+{
+  const auto truth = model_around_region(reference, info, lights);
+  Segments_by_level<typename GeomTraits::Point_3> segments;
+  for (const auto& line : truth.lines()) {
+    auto& s = segments[line.level];
+    for (std::size_t i = 0; i + 1 < line.nodes.size(); ++i)
+      s.emplace_back(truth.nodes()[line.nodes[i]].point, truth.nodes()[line.nodes[i + 1]].point);
+    if (line.is_closed && line.nodes.size() > 1)
+      s.emplace_back(truth.nodes()[line.nodes.back()].point,
+                     truth.nodes()[line.nodes.front()].point);
+  }
+  return segments;
+}
+
 template <typename TriangleMesh, typename Model, typename Point_3>
 Line_deviation deviation_of_nodes(const TriangleMesh& tm, const Region_info<TriangleMesh>& info,
                                   const Model& model, const Segments_by_level<Point_3>& reference)
 {
-  typedef typename CGAL::Kernel_traits<Point_3>::Kernel K;
   Line_deviation result;
   double sum = 0;
   for (const auto& node : model.nodes()) {
@@ -211,10 +244,7 @@ Line_deviation deviation_of_nodes(const TriangleMesh& tm, const Region_info<Tria
       ++result.unmatched;
       continue;
     }
-    double best = std::numeric_limits<double>::infinity();
-    for (const auto& s : it->second)
-      best = (std::min)(best, CGAL::to_double(CGAL::squared_distance(
-                                  node.point, typename K::Segment_3(s.first, s.second))));
+    const double best = squared_distance_to_segments(node.point, it->second);
     sum += best;
     result.max = (std::max)(result.max, std::sqrt(best));
     ++result.nodes;
@@ -248,18 +278,40 @@ deviation_from_reference(const TriangleMesh& tm, const TriangleMesh& reference,
                          const Region_info<TriangleMesh>& info,
                          const CGAL::Highlight_lines::Light_setup<GeomTraits>& lights)
 {
-  const auto truth = model_around_region(reference, info, lights);
-  quality_detail::Segments_by_level<typename GeomTraits::Point_3> segments;
-  for (const auto& line : truth.lines()) {
-    auto& s = segments[line.level];
-    for (std::size_t i = 0; i + 1 < line.nodes.size(); ++i)
-      s.emplace_back(truth.nodes()[line.nodes[i]].point, truth.nodes()[line.nodes[i + 1]].point);
-    if (line.is_closed && line.nodes.size() > 1)
-      s.emplace_back(truth.nodes()[line.nodes.back()].point,
-                     truth.nodes()[line.nodes.front()].point);
+  return quality_detail::deviation_of_nodes(
+      tm, info, model_around_region(tm, info, lights),
+      quality_detail::reference_segments(reference, info, lights));
+}
+
+/// How far the desired lines `targets` (of the input) lie from the lines of the same level on
+/// `reference` (the undented surface): the RMS and the largest distance of their inner sample
+/// points to the nearest reference segment of their level, in the measure of
+/// deviation_from_reference() (`nodes` counts the points). A fairing that met its targets
+/// exactly would end this far from the truth's lines.
+template <typename TriangleMesh, typename GeomTraits>
+Line_deviation
+targets_from_reference(const TriangleMesh& reference, const Region_info<TriangleMesh>& info,
+                       const CGAL::Highlight_lines::Light_setup<GeomTraits>& lights,
+                       const std::vector<Target_curve<typename GeomTraits::Point_3>>& targets)
+{
+  const auto segments = quality_detail::reference_segments(reference, info, lights);
+  Line_deviation result;
+  double sum = 0;
+  for (const auto& target : targets) {
+    auto it = segments.find(target.level);
+    for (std::size_t i = 1; i + 1 < target.points.size(); ++i) {
+      if (it == segments.end() || it->second.empty()) {
+        ++result.unmatched;
+        continue;
+      }
+      const double d = quality_detail::squared_distance_to_segments(target.points[i], it->second);
+      sum += d;
+      result.max = (std::max)(result.max, std::sqrt(d));
+      ++result.nodes;
+    }
   }
-  return quality_detail::deviation_of_nodes(tm, info, model_around_region(tm, info, lights),
-                                            segments);
+  result.rms = result.nodes > 0 ? std::sqrt(sum / double(result.nodes)) : 0.0;
+  return result;
 }
 
 namespace quality_detail {
