@@ -102,10 +102,10 @@ TEST(FairingQuality, MeasuresVanishOnTheReferenceItself)
 
 // The desired lines' distance to a reference's lines (benchmark_real_dents, row "desired"): on
 // a plane, whose lines are straight and which the OGH curves between them keep, next to none
-// (measured: RMS 0.003 ē, largest 0.02 ē, where a few lines' delimiting nodes move by 1e-3 ē
-// with the dent); on a curved surface 40 times more, and nearly the same for any depth of the
-// dent (the desired lines are built from the lines outside the region; measured: 2e-4 of it
-// apart).
+// (measured: RMS 0.003 ē, largest 0.02 ē: the region's jagged border comes within one ring of
+// the dent's faint tail, whose normals move a few delimiting nodes by up to 0.01 ē); on a curved
+// surface 40 times more, and nearly the same for any depth of the dent (the desired lines are built
+// from the lines outside the region; measured: 2e-4 of it apart).
 TEST(FairingQuality, DesiredLinesLieNearAPlanesLinesAndHardlyDependOnTheDent)
 {
   const Lights lights(Point(0, 0, 3), Vector(1, 0, 0), Vector(0, 0, 1), 0.06);
