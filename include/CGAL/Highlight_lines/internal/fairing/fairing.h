@@ -663,12 +663,15 @@ private:
   Flip_guard flip_guard_;
   std::vector<double> radius_; // trust radius of each movable vertex in the current program
   std::vector<double> hold_;   // its hold after a step that would have flipped a face
-  // μ at the first step: twice eq. 16's bound, the shortest edge at V_i. Measured against 1
-  // (the paper's bound): real dents (30 cases) 3.1 -> 2.6 x PMP::fair's time, quality the
-  // same; hoods of 9,173 movable vertices 2.1 -> 1.4 x, 2.4·10^4 2.4 -> 1.9 x. Factors of 4
-  // and 8 gain nothing more on real dents and lose on scan-like triangulations (jitter 0.45 ē:
-  // median iterations 11 with 2, 11 and 15 with 4 and 8).
-  static constexpr double initial_trust_factor = 2;
+  // μ at the first step: four times eq. 16's bound, twice the shortest edge at V_i. A first
+  // program whose bounds hold the dent back costs the solver active-set steps, and the next
+  // program has to finish the move. Measured against 2 (December 6, 2026, same binary): hoods
+  // of 784, 9,173 and 2.4·10^4 movable vertices 3 -> 2, 5 -> 4 and 7 -> 6 iterations, 10^5
+  // 22 -> 18 (26 -> 23 s; PMP::fair 6.4 s); real dents (30 cases) the same
+  // iterations and results to three digits; scan-like real dents (jitter 0.3 and 0.45 ē,
+  // seeds 7-9) median iterations 4-5 -> 3.5-4 and 4.5-6 -> 4-5.5, all but two converged ->
+  // all. 8 gains more on the hoods but loses at 10^5 and on jitter 0.45 (seed 8: 6.8 -> 8.1 x).
+  static constexpr double initial_trust_factor = 4;
   double trust_factor_ = initial_trust_factor; // μ
   bool blocked_ = false;                       // the last step could move no vertex
   bool pattern_declared_ = false;              // see assemble_program()
