@@ -22,6 +22,7 @@
 #include <CGAL/Highlight_lines/internal/fairing/node_jacobian.h>
 #include <CGAL/Highlight_lines/internal/fairing/ogh_curve.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <map>
@@ -173,19 +174,21 @@ double add_difference_quadratic(const Model& model, const std::vector<Matched_pi
           continue;
       }
       J.node_row(node, edge_vertices, model.levels, spacing, row);
+      // By variable, so that the pairs a <= b of the upper triangle are those that follow a.
+      std::sort(row.begin(), row.end(),
+                [](const auto& x, const auto& y) { return x.first < y.first; });
       const Vec3 q = node_position(model, piece.nodes[i + 1]);
       const Vec3 r{q[0] - piece.targets[i][0], q[1] - piece.targets[i][1],
                    q[2] - piece.targets[i][2]};
-      const double l = piece.weights[i];
-      for (const auto& a : row) {
-        add_q(a.first, 2 * w * l * vector3::dot(a.second, r));
-        for (const auto& b : row)
-          if (a.first <= b.first) {
-            const double value = 2 * w * l * vector3::dot(a.second, b.second);
-            add_P(a.first, b.first, value);
-            if (a.first == b.first)
-              trace += value;
-          }
+      const double factor = 2 * w * piece.weights[i];
+      for (std::size_t ia = 0; ia < row.size(); ++ia) {
+        const auto& a = row[ia];
+        add_q(a.first, factor * vector3::dot(a.second, r));
+        const double diagonal = factor * vector3::dot(a.second, a.second);
+        add_P(a.first, a.first, diagonal);
+        trace += diagonal;
+        for (std::size_t ib = ia + 1; ib < row.size(); ++ib)
+          add_P(a.first, row[ib].first, factor * vector3::dot(a.second, row[ib].second));
       }
     }
   return trace;
