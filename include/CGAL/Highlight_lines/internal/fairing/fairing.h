@@ -667,10 +667,10 @@ private:
   // program whose bounds hold the dent back costs the solver active-set steps, and the next
   // program has to finish the move. Measured against 2 (December 6, 2026, same binary): hoods
   // of 784, 9,173 and 2.4·10^4 movable vertices 3 -> 2, 5 -> 4 and 7 -> 6 iterations, 10^5
-  // 22 -> 18 (26 -> 23 s; PMP::fair 6.4 s); real dents (30 cases) the same
-  // iterations and results to three digits; scan-like real dents (jitter 0.3 and 0.45 ē,
-  // seeds 7-9) median iterations 4-5 -> 3.5-4 and 4.5-6 -> 4-5.5, all but two converged ->
-  // all. 8 gains more on the hoods but loses at 10^5 and on jitter 0.45 (seed 8: 6.8 -> 8.1 x).
+  // 22 -> 18 (26 -> 23 s; PMP::fair 6.4 s); real dents (30 cases) the same iterations and
+  // results to three digits; scan-like real dents (jitter 0.3 and 0.45 ē, seeds 7-9, 180
+  // fairings) median iterations 4-5 -> 3.5-4 and 4.5-6 -> 4-5.5, 177 converged -> all. 8 gains
+  // more on the hoods but loses at 10^5 and on jitter 0.45 (seed 8: 6.8 -> 8.1 x PMP::fair).
   static constexpr double initial_trust_factor = 4;
   double trust_factor_ = initial_trust_factor; // μ
   bool blocked_ = false;                       // the last step could move no vertex

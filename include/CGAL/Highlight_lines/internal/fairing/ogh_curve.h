@@ -183,7 +183,7 @@ public:
       if (next == t)
         break;
       // Newton converges quadratically: after a correction this small (in units of the
-      // piece's parameter width) the next residual is below the tolerance, and checking it
+      // piece's parameter width) the next residual is at rounding level, and checking it
       // would cost another integration (a third of the inversion's time).
       const bool converged = std::abs(next - t) <= 1e-8 * width;
       t = next;
