@@ -188,12 +188,15 @@ vertices_on_sharp_edges(const std::vector<std::array<double, 3>>& positions,
   using namespace willmore_detail;
   std::vector<char> on_sharp_edge(positions.size(), 0);
   const double cos_sharp = std::cos(sharp_edge_angle);
-  auto unit_normal = [&](const std::array<int, 3>& t) {
+  // Once per triangle: each takes part in up to three edge comparisons.
+  std::vector<std::array<double, 3>> unit_normals(triangles.size());
+  for (std::size_t i = 0; i < triangles.size(); ++i) {
+    const std::array<int, 3>& t = triangles[i];
     const auto n = cross(positions[std::size_t(t[1])] - positions[std::size_t(t[0])],
                          positions[std::size_t(t[2])] - positions[std::size_t(t[0])]);
     const double length = std::sqrt(dot(n, n));
-    return length > 0 ? (1 / length) * n : n;
-  };
+    unit_normals[i] = length > 0 ? (1 / length) * n : n;
+  }
   // The triangle sides grouped by their smaller vertex (a stable counting sort, in triangle
   // order: this runs on every triangle of the fairing's local mesh); within a group, each later
   // triangle of an edge is compared with its first.
@@ -221,8 +224,8 @@ vertices_on_sharp_edges(const std::vector<std::array<double, 3>>& positions,
       int first = group_start[a];
       while (sides[std::size_t(first)].b != side.b)
         ++first;
-      if (first != p && dot(unit_normal(triangles[sides[std::size_t(first)].triangle]),
-                            unit_normal(triangles[side.triangle])) < cos_sharp)
+      if (first != p && dot(unit_normals[sides[std::size_t(first)].triangle],
+                            unit_normals[side.triangle]) < cos_sharp)
         on_sharp_edge[a] = on_sharp_edge[std::size_t(side.b)] = 1;
     }
   return on_sharp_edge;
