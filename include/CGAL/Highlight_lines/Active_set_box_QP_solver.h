@@ -393,6 +393,8 @@ private:
     has_factorization_ = true;
     factorization_is_stale_ = false;
     inertia_ = ldlt_.factorize(masked_values_.data(), pivot_tolerance_);
+    single_precision_preconditioner_ =
+        ldlt_.number_of_factor_entries() >= single_precision_factor_entries;
     if (inertia_ == internal::Supernodal_LDLT::Inertia::INDEFINITE)
       negative_curvature_variable_ = ldlt_.negative_pivot();
     return inertia_;
@@ -584,6 +586,23 @@ private:
   // tells apart).
   bool solve_by_preconditioned_cg(const std::vector<char>& is_free, Eigen::VectorXd& x)
   {
+    // A large factorisation in single precision first: the substitutions stream the factor
+    // from memory, and floats halve what they read (10^5 variables: a fairing's conjugate
+    // gradients 1.6 times faster). Where the matrix is too ill-conditioned for floats
+    // (slivers), conjugate gradients stall with it; they go on from where they are with the
+    // factorisation in double precision, which then preconditions every solve until the next
+    // factorisation. A factor that fits in the cache gains little, and small programs keep
+    // double precision.
+    if (single_precision_preconditioner_) {
+      if (preconditioned_cg(is_free, x))
+        return true;
+      single_precision_preconditioner_ = false;
+    }
+    return preconditioned_cg(is_free, x);
+  }
+
+  bool preconditioned_cg(const std::vector<char>& is_free, Eigen::VectorXd& x)
+  {
     const Sparse_matrix& P = problem_.P();
     const Eigen::VectorXd& q = problem_.q();
     const Eigen::VectorXd& diagonal = problem_.diagonal();
@@ -599,7 +618,10 @@ private:
       for (Eigen::Index i = 0; i < n; ++i)
         if (!factored_free_[i])
           z[i] = 0.;
-      ldlt_.solve(z);
+      if (single_precision_preconditioner_)
+        ldlt_.solve_in_single_precision(z);
+      else
+        ldlt_.solve(z);
       for (Eigen::Index i = 0; i < n; ++i)
         if (!is_free[i])
           z[i] = 0.;
@@ -1400,6 +1422,11 @@ private:
   // and how many preconditioned iterations this solve() has spent.
   bool factorization_is_stale_ = false;
   std::size_t preconditioned_iterations_ = 0;
+  // Whether conjugate gradients use the factorisation in single precision, see
+  // solve_by_preconditioned_cg(): from 2^22 entries of the factor on (32 MiB in double
+  // precision, beyond the last-level cache of most machines).
+  bool single_precision_preconditioner_ = false;
+  static constexpr std::size_t single_precision_factor_entries = std::size_t(1) << 22;
   std::vector<char> factored_free_;
   std::vector<double> masked_values_;
   // The columns of the bordering of the last factorisation, and for which variables.

@@ -95,6 +95,7 @@ public:
   void analyze(int n, const int* outer, const int* inner, const std::vector<int>& ordering)
   {
     n_ = n;
+    has_single_precision_factor_ = false;
     std::vector<int> position(n);
     for (int k = 0; k < n; ++k)
       position[ordering[k]] = k;
@@ -250,6 +251,7 @@ public:
   {
     const int n = n_;
     const int supernodes = number_of_supernodes();
+    has_single_precision_factor_ = false;
     D_.assign(n, 0.);
     is_zero_pivot_.assign(n, 0);
     zero_pivots_ = 0;
@@ -361,10 +363,46 @@ public:
   void solve(Eigen::VectorXd& b) const
   {
     permute_in(b, work_);
-    forward_substitute(work_);
+    forward_substitute(L_.data(), work_);
     divide_by_pivots(work_);
-    backward_substitute(work_);
+    backward_substitute(L_.data(), work_);
     permute_out(work_, b);
+  }
+
+  // b <- (L D L^T)^+ b as solve() does, with the substitutions in single precision (relative
+  // error ~1e-7): for a preconditioner, whose exactness does not matter. The substitutions
+  // stream the factor from memory, and a copy in floats halves what they read (made at the
+  // first such solve after a factorisation). The vectors are scaled to a largest entry of 1
+  // before each substitution, so that any scale of the problem stays within float's range.
+  void solve_in_single_precision(Eigen::VectorXd& b) const
+  {
+    if (!has_single_precision_factor_) {
+      const std::size_t size = number_of_factor_entries();
+      single_L_.resize(size);
+      const double* from = L_.data();
+      float* to = single_L_.data();
+      for (std::size_t i = 0; i < size; ++i)
+        to[i] = static_cast<float>(from[i]);
+      has_single_precision_factor_ = true;
+    }
+    const double b_scale = b.cwiseAbs().maxCoeff();
+    if (!(b_scale > 0.) || !std::isfinite(b_scale))
+      return solve(b); // zero (nothing to scale) or not finite (let it propagate)
+    single_work_.resize(n_);
+    for (int k = 0; k < n_; ++k)
+      single_work_[k] = static_cast<float>(b[permutation_[k]] / b_scale);
+    forward_substitute(single_L_.data(), single_work_);
+    work_.resize(n_);
+    for (int j = 0; j < n_; ++j)
+      work_[j] = is_zero_pivot_[j] ? 0. : double(single_work_[j]) / D_[j];
+    double y_scale = work_.cwiseAbs().maxCoeff();
+    if (!(y_scale > 0.) || !std::isfinite(y_scale))
+      y_scale = 1.;
+    for (int j = 0; j < n_; ++j)
+      single_work_[j] = static_cast<float>(work_[j] / y_scale);
+    backward_substitute(single_L_.data(), single_work_);
+    for (int k = 0; k < n_; ++k)
+      b[permutation_[k]] = double(single_work_[k]) * y_scale * b_scale;
   }
 
   using Right_hand_sides = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
@@ -376,9 +414,9 @@ public:
     Right_hand_sides Y(n_, B.cols());
     for (int k = 0; k < n_; ++k)
       Y.row(k) = B.row(permutation_[k]);
-    forward_substitute(Y);
+    forward_substitute(L_.data(), Y);
     divide_by_pivots(Y);
-    backward_substitute(Y);
+    backward_substitute(L_.data(), Y);
     for (int k = 0; k < n_; ++k)
       B.row(permutation_[k]) = Y.row(k);
   }
@@ -390,14 +428,14 @@ public:
                                   Eigen::VectorXd& null_direction) const
   {
     permute_in(b, work_);
-    forward_substitute(work_);
+    forward_substitute(L_.data(), work_);
     null_work_.setZero(n_);
     for (int j = 0; j < n_; ++j)
       if (is_zero_pivot_[j])
         null_work_[j] = work_[j];
     divide_by_pivots(work_);
-    backward_substitute(work_);
-    backward_substitute(null_work_);
+    backward_substitute(L_.data(), work_);
+    backward_substitute(L_.data(), null_work_);
     x.resize(n_);
     null_direction.resize(n_);
     permute_out(work_, x);
@@ -408,6 +446,11 @@ public:
   // The variable at which negative curvature was found, or -1.
   int negative_pivot() const { return negative_pivot_; }
   double factorization_flops() const { return factorization_flops_; }
+  // The entries of L stored (the panels of the supernodes, explicit zeros included).
+  std::size_t number_of_factor_entries() const
+  {
+    return panel_start_.empty() ? 0 : panel_start_.back();
+  }
   double solve_flops() const { return solve_flops_; }
 
 private:
@@ -508,16 +551,18 @@ private:
   }
 
   // Y: a vector, or a row-major matrix whose columns are right-hand sides (so that the rows
-  // gathered and scattered below are contiguous).
+  // gathered and scattered below are contiguous); `factor`: the panels of L, in the scalar
+  // type of Y.
   template <class Rows>
-  void forward_substitute(Rows& Y) const
+  void forward_substitute(const typename Rows::Scalar* factor, Rows& Y) const
   {
+    typedef Eigen::Matrix<typename Rows::Scalar, Eigen::Dynamic, Eigen::Dynamic> Panel;
     const int supernodes = number_of_supernodes();
     Rows buffer(max_below_, Y.cols()); // allocated once: most supernodes are small
     for (int s = 0; s < supernodes; ++s) {
       const int first = super_first_[s], k = super_first_[s + 1] - first;
       const int below = struct_start_[s + 1] - struct_start_[s];
-      Eigen::Map<const Eigen::MatrixXd> panel(L_.data() + panel_start_[s], k + below, k);
+      Eigen::Map<const Panel> panel(factor + panel_start_[s], k + below, k);
       auto X = Y.middleRows(first, k);
       panel.topRows(k).template triangularView<Eigen::UnitLower>().solveInPlace(X);
       if (below > 0) {
@@ -542,13 +587,14 @@ private:
   }
 
   template <class Rows>
-  void backward_substitute(Rows& Y) const
+  void backward_substitute(const typename Rows::Scalar* factor, Rows& Y) const
   {
+    typedef Eigen::Matrix<typename Rows::Scalar, Eigen::Dynamic, Eigen::Dynamic> Panel;
     Rows buffer(max_below_, Y.cols());
     for (int s = number_of_supernodes() - 1; s >= 0; --s) {
       const int first = super_first_[s], k = super_first_[s + 1] - first;
       const int below = struct_start_[s + 1] - struct_start_[s];
-      Eigen::Map<const Eigen::MatrixXd> panel(L_.data() + panel_start_[s], k + below, k);
+      Eigen::Map<const Panel> panel(factor + panel_start_[s], k + below, k);
       auto X = Y.middleRows(first, k);
       if (below > 0) {
         auto t = buffer.topRows(below);
@@ -573,6 +619,10 @@ private:
   int zero_pivots_ = 0, negative_pivot_ = -1;
   double factorization_flops_ = 0., solve_flops_ = 0.;
   mutable Eigen::VectorXd work_, null_work_;
+  // A copy of L_ in single precision, for solve_in_single_precision().
+  mutable Uninitialized_array<float> single_L_;
+  mutable bool has_single_precision_factor_ = false;
+  mutable Eigen::VectorXf single_work_;
 };
 
 } // namespace internal
