@@ -6,7 +6,8 @@
 // (BM_box_QP), and as a ratio to ONE of the solver's own supernodal factorisations of the
 // same matrix, on programs whose active bounds form smooth regions or are scattered as in
 // Moré and Toraldo's GPCG test problems (BM_box_QP_vs_factorization, described below; run it
-// alone with --benchmark_filter=vs_factorization, about 5 minutes).
+// alone with --benchmark_filter=vs_factorization, about 5 minutes), and one solve with the
+// factorisation in single precision against one in double (BM_preconditioner_precision).
 //
 // The problem: the cotangent bi-Laplacian  W^T M^-1 W  of the interior vertices of an
 // irregular Delaunay disk patch (random points whose density varies across the disk, the
@@ -425,6 +426,40 @@ void BM_box_QP_vs_factorization(benchmark::State& state)
   }
 }
 
+// BM_preconditioner_precision: one solve with the supernodal factorisation of the smooth
+// case's matrix in single precision (Supernodal_LDLT::solve_in_single_precision(), what the
+// solver's conjugate gradients use on factors of 2^22 entries and more) as a ratio to one
+// in double precision (solve()), both timed in every iteration, in CPU time of the thread;
+// the single-precision copy of the factor is made before (once per factorisation). Counters:
+// ratio, single_ms, double_ms, factor_MB (in double precision), the relative difference.
+void BM_preconditioner_precision(benchmark::State& state)
+{
+  const int n = static_cast<int>(state.range(0));
+  Ratio_case_data& data = ratio_case_data(n, SMOOTH);
+  data.ldlt.factorize(data.patch.Q.valuePtr(), 1e-12);
+  const Eigen::VectorXd b = data.c;
+  Eigen::VectorXd exact = b, single = b;
+  data.ldlt.solve_in_single_precision(single); // makes the copy
+  std::vector<double> double_times, single_times;
+  for (auto _ : state) {
+    exact = b;
+    double begin = thread_seconds();
+    data.ldlt.solve(exact);
+    double_times.push_back(thread_seconds() - begin);
+    single = b;
+    begin = thread_seconds();
+    data.ldlt.solve_in_single_precision(single);
+    const double elapsed = thread_seconds() - begin;
+    single_times.push_back(elapsed);
+    state.SetIterationTime(elapsed);
+  }
+  state.counters["ratio"] = median(single_times) / median(double_times);
+  state.counters["single_ms"] = 1e3 * median(single_times);
+  state.counters["double_ms"] = 1e3 * median(double_times);
+  state.counters["factor_MB"] = 8e-6 * double(data.ldlt.number_of_factor_entries());
+  state.counters["relative_difference"] = (single - exact).norm() / exact.norm();
+}
+
 void ratio_cases(benchmark::internal::Benchmark* benchmark)
 {
   benchmark->ArgNames({"n", "kind", "start"});
@@ -444,5 +479,14 @@ BENCHMARK(BM_box_QP_vs_factorization)
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(5);
+
+// Medians of 21 solves of each kind; run alone with --benchmark_filter=precision.
+BENCHMARK(BM_preconditioner_precision)
+    ->ArgName("n")
+    ->Arg(10000)
+    ->Arg(100000)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(21);
 
 BENCHMARK_MAIN();

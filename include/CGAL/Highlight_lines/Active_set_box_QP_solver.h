@@ -587,8 +587,8 @@ private:
   bool solve_by_preconditioned_cg(const std::vector<char>& is_free, Eigen::VectorXd& x)
   {
     // A large factorisation in single precision first: the substitutions stream the factor
-    // from memory, and floats halve what they read (10^5 variables: a fairing's conjugate
-    // gradients 1.6 times faster). Where the matrix is too ill-conditioned for floats
+    // from memory, and floats halve what they read (a solve takes 0.59 times as long at 10^5
+    // variables, benchmark_qp_solver). Where the matrix is too ill-conditioned for floats
     // (slivers), conjugate gradients stall with it; they go on from where they are with the
     // factorisation in double precision, which then preconditions every solve until the next
     // factorisation. A factor that fits in the cache gains little, and small programs keep
