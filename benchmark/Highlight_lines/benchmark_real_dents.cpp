@@ -4,6 +4,7 @@
 //
 //   benchmark_real_dents [--table] [--seed N] [--centres N] [--repetitions N] [--mesh STEM]
 //                        [--dump DIR] [--jitter J] [--from-truth] [--far-grid N] [--anywhere N]
+//                        [--depths D1,D2,...]
 //
 // The table mode is the only mode (`--table` is accepted and is the default): one Markdown
 // table per case, then two summary tables (one row per method): over all the cases, and over
@@ -14,7 +15,8 @@
 // Cases (real_dent_cases.h): for every mesh of HIGHLIGHT_LINES_SHARED_DATA_DIR (beetle, bunny,
 // camelhead, fandisk, rocker-arm, spot; missing files are skipped with a message), up to
 // `--centres` (3) centres drawn with the fixed seed (`--seed`, 2026), each dented to depths 1 ē
-// and 0.3 ē; the region is the faces within 8 ē of the centre, the lights cross it with about
+// and 0.3 ē (`--depths`, a comma-separated list in ē: e.g. 5,3 for pits as deep as the dent's
+// radius of 5 ē); the region is the faces within 8 ē of the centre, the lights cross it with about
 // 10 lines. The centres are in smooth patches (largest dihedral <= 25°, face normals within 45°
 // of the lights' normal) where the mesh has them; a mesh with fewer is filled up with its
 // smoothest rough patches (face normals within 75°), so that every mesh gives cases. The case
@@ -71,8 +73,9 @@
 //              HL::Invalid_input, HL::Fairing_failure or another std::exception, or PMP::fair
 //              returning false)
 //   status     ours: HL::to_string(report.status) (CONVERGED, ITERATION_LIMIT, STEP_BLOCKED,
-//              ...); conv: report.converged(), xu_flow: its convergence flag; pmp_fair: its
-//              return value
+//              ...), "(refilled)" where it ran again from PMP::fair's fill of the region
+//              (Fairing_report::restarted_from_fill); conv: report.converged(), xu_flow: its
+//              convergence flag; pmp_fair: its return value
 //   iters      iterations (pmp_fair: 1); the summaries give the median and the maximum
 //   fact       sparse factorisations: ours, the QP solver's summed over the iterations
 //              (Box_QP_report::factorizations); pmp_fair, one LU; xu_flow, one LU per step;
@@ -108,6 +111,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -138,8 +142,9 @@ struct Options
   std::string only_mesh, dump_dir;
   double jitter = 0; // in ē_g
   bool from_truth = false;
-  int far_grid = 0;         // cells per side of the grid added far away
-  std::size_t anywhere = 0; // regions per mesh of the --anywhere mode (0: the table)
+  int far_grid = 0;                        // cells per side of the grid added far away
+  std::size_t anywhere = 0;                // regions per mesh of the --anywhere mode (0: the table)
+  std::vector<double> depths = {1.0, 0.3}; // in ē
 };
 
 // Appends an n x n grid of triangles beyond the bounding box of `mesh` (faces and vertices get
@@ -218,7 +223,8 @@ Run run_method(Method method, const HB::Real_dent_case& c,
     run.iterations = r.iterations;
     for (const HL::Fairing_report::Iteration& step : r.history)
       run.factorizations += step.solver.factorizations;
-    run.status = HL::to_string(r.status);
+    run.status =
+        std::string(HL::to_string(r.status)) + (r.restarted_from_fill ? " (refilled)" : "");
     run.converged = r.converged();
     break;
   }
@@ -318,6 +324,15 @@ std::string general(double x)
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.4g", x);
   return buffer;
+}
+
+// "1, 0.3 and 5": the dent depths, for the title.
+std::string depth_list(const std::vector<double>& depths)
+{
+  std::string list;
+  for (std::size_t i = 0; i < depths.size(); ++i)
+    list += (i == 0 ? "" : i + 1 == depths.size() ? " and " : ", ") + general(depths[i]);
+  return list;
 }
 
 // Markdown cells must not contain '|' or new lines.
@@ -543,10 +558,20 @@ bool parse(int argc, char** argv, Options& options)
       options.far_grid = std::stoi(value());
     else if (a == "--anywhere")
       options.anywhere = std::size_t(std::stoul(value()));
-    else {
+    else if (a == "--depths") {
+      options.depths.clear();
+      std::stringstream list(value());
+      for (std::string depth; std::getline(list, depth, ',');)
+        options.depths.push_back(std::stod(depth));
+      if (options.depths.empty() || !std::all_of(options.depths.begin(), options.depths.end(),
+                                                 [](double d) { return d > 0; })) {
+        std::cerr << "benchmark_real_dents: --depths needs positive depths, e.g. 1,0.3\n";
+        return false;
+      }
+    } else {
       std::cerr << "usage: benchmark_real_dents [--table] [--seed N] [--centres N] "
                    "[--repetitions N] [--mesh STEM] [--dump DIR] [--jitter J] [--from-truth] "
-                   "[--far-grid N] [--anywhere N]\n";
+                   "[--far-grid N] [--anywhere N] [--depths D1,D2,...]\n";
       return false;
     }
   }
@@ -633,7 +658,8 @@ int main(int argc, char** argv)
   const auto start = std::chrono::steady_clock::now();
   std::ostream& out = std::cout;
   out << "# Dents in real meshes (seed " << options.seed << ", up to " << options.centres
-      << " centres per mesh, depths 1 and 0.3 ē, median of " << options.repetitions << " runs"
+      << " centres per mesh, depths " << depth_list(options.depths) << " ē, median of "
+      << options.repetitions << " runs"
       << (options.jitter > 0 ? "; tangential jitter up to " + general(options.jitter) + " ē_g"
                              : std::string())
       << ")\n";
@@ -641,6 +667,7 @@ int main(int argc, char** argv)
   HB::Real_dent_options dent_options;
   dent_options.max_centres = options.centres;
   dent_options.jitter = options.jitter;
+  dent_options.depths = options.depths;
   // The extremes of the region triangles over all the cases (of their dented inputs).
   double smallest_corner = 180;
   std::string smallest_corner_case;
@@ -750,8 +777,8 @@ int main(int argc, char** argv)
   }
   print_summary(out, "all", summaries);
   print_summary(out, "smooth", smooth_summaries);
-  print_summary(out, "1 ē dents", deep_summaries);
-  print_summary(out, "0.3 ē dents", shallow_summaries);
+  print_summary(out, "dents of 1 ē or deeper", deep_summaries);
+  print_summary(out, "dents shallower than 1 ē", shallow_summaries);
   out << "\n(region triangles of the dented inputs, over the " << cases_total
       << " cases: smallest corner " << fixed(smallest_corner, 2) << "°"
       << (smallest_corner_case.empty() ? std::string() : " (" + smallest_corner_case + ")") << "; "

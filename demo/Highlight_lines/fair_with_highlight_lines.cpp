@@ -508,6 +508,10 @@ int main(int argc, char** argv)
                 << "them would have flipped a triangle\n";
     if (report.returned_best_iterate)
       std::cout << "the mesh is the iterate of lowest F, not the last one\n";
+    if (report.restarted_from_fill)
+      std::cout << "the first run (" << report.first_run_iterations
+                << " iterations) ended held back against flips; the rest ran from the region "
+                   "filled by PMP::fair (uniform bi-Laplacian)\n";
     if (!report.history.empty())
       std::cout << "target F = w1 q_fair + w2 q_diff: " << report.history.front().target_value
                 << " -> " << report.history.back().target_value << "\n";

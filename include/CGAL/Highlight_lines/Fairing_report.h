@@ -107,6 +107,18 @@ struct Fairing_report
   /// short of convergence (`ITERATION_LIMIT` or `STEP_BLOCKED`) after a step that raised `F`.
   bool returned_best_iterate = false;
 
+  /// Whether the iteration was run a second time, from the region filled by
+  /// `Polygon_mesh_processing::fair()` (a bi-Laplacian surface; its vertices also move
+  /// tangentially), because the first run ended with vertices held back against flips, two
+  /// blocked steps, or without lowering `F`: moving along the vertex normals cannot undo a pit
+  /// as deep as it is wide, whose walls' normals point across it. The second run has the
+  /// iterations the first left of the bound; `history` holds both runs' iterations, then the
+  /// energies of the mesh returned, which is the run of lower `F`.
+  bool restarted_from_fill = false;
+  /// With `restarted_from_fill`: the iterations of the first run (the first entries of
+  /// `history`).
+  std::size_t first_run_iterations = 0;
+
   /// Whether the iteration converged.
   bool converged() const { return status == Status::CONVERGED; }
 };
