@@ -510,8 +510,9 @@ int main(int argc, char** argv)
       std::cout << "the mesh is the iterate of lowest F, not the last one\n";
     if (report.restarted_from_fill)
       std::cout << "the first run (" << report.first_run_iterations
-                << " iterations) ended held back against flips; the rest ran from the region "
-                   "filled by PMP::fair (uniform bi-Laplacian)\n";
+                << " iterations) ended held back against flips or without lowering F; the "
+                   "mesh returned is from a second run, started from the region filled by "
+                   "PMP::fair (uniform bi-Laplacian)\n";
     if (!report.history.empty())
       std::cout << "target F = w1 q_fair + w2 q_diff: " << report.history.front().target_value
                 << " -> " << report.history.back().target_value << "\n";

@@ -107,13 +107,17 @@ struct Fairing_report
   /// short of convergence (`ITERATION_LIMIT` or `STEP_BLOCKED`) after a step that raised `F`.
   bool returned_best_iterate = false;
 
-  /// Whether the iteration was run a second time, from the region filled by
-  /// `Polygon_mesh_processing::fair()` (a bi-Laplacian surface; its vertices also move
-  /// tangentially), because the first run ended with vertices held back against flips, two
-  /// blocked steps, or without lowering `F`: moving along the vertex normals cannot undo a pit
-  /// as deep as it is wide, whose walls' normals point across it. The second run has the
-  /// iterations the first left of the bound; `history` holds both runs' iterations, then the
-  /// energies of the mesh returned, which is the run of lower `F`.
+  /// Whether the mesh returned comes from a second run, started from the region filled by
+  /// `Polygon_mesh_processing::fair()` with uniform weights (a bi-Laplacian surface; its vertices
+  /// also move tangentially). Moving along the vertex normals cannot undo a pit as deep as it is
+  /// wide, whose walls' normals point across it: a first run that ends with vertices held back
+  /// against flips (in one of its last two steps), two blocked steps, or without lowering `F`
+  /// below the input's, is followed by a second one with the iterations it left of the bound,
+  /// unless a sharp edge (60°) of the input meets the region's border. The second run is kept
+  /// if it flips no face against the input and ends at a quarter of the first run's `F` or
+  /// less; `history` then holds both runs' iterations and the energies of the mesh returned.
+  /// Otherwise the first run's mesh is restored and this report is the first run's alone
+  /// (the visitor has been called for the second run's iterations too).
   bool restarted_from_fill = false;
   /// With `restarted_from_fill`: the iterations of the first run (the first entries of
   /// `history`).

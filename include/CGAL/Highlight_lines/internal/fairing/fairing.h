@@ -162,11 +162,13 @@ private:
   // walls of a pit inside the region can be sharp too; they do not reach its border.
   bool sharp_edge_crosses_the_border() const
   {
-    const std::vector<char> sharp =
-        options_.fairness_energy == Fairness_energy::CURVATURE_VARIATION
-            ? crease_vertices_
-            : vertices_on_sharp_edges(local_points(), engine_.local_mesh().face_vertices,
+    // The curvature variation has found them already (make_targets()).
+    std::vector<char> found;
+    if (options_.fairness_energy != Fairness_energy::CURVATURE_VARIATION)
+      found = vertices_on_sharp_edges(local_points(), engine_.local_mesh().face_vertices,
                                       crease_angle());
+    const std::vector<char>& sharp =
+        options_.fairness_energy == Fairness_energy::CURVATURE_VARIATION ? crease_vertices_ : found;
     const auto& faces = engine_.local_mesh().face_vertices;
     for (std::size_t f = 0; f < region_.face_in_region.size(); ++f)
       if (region_.face_in_region[f])
