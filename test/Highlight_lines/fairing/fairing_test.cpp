@@ -423,6 +423,50 @@ TEST(Fairing, PitRestartedFromAFillAgreesOnSurfaceMeshAndPolyhedron)
   EXPECT_LT(std::sqrt(squares / double(count)), 0.15 * std::sqrt(input_squares / double(count)));
 }
 
+// A feature crossing the region is not rounded off by the fill: where a sharp edge (60°) of the
+// input meets a vertex of the region's border, the pit keeps its first run although that run
+// ended as the ones refilled do (held back against flips, or F not below the input's). The pit
+// of the test above, with a ramp of slope 2 beyond a row of the grid that crosses the region but
+// not the pit (a crease of 63° along that row); without the ramp, the same soup is refilled.
+TEST(Fairing, PitIsNotRefilledWhereASharpEdgeCrossesTheRegionsBorder)
+{
+  const int n = 30, crease_row = 20;
+  const double crease_y = -1 + crease_row * 2.0 / n; // 0.33: 0.38 from the pit's centre
+  for (const double slope : {0.0, 2.0}) {
+    SCOPED_TRACE(slope == 0 ? "no crease" : "crease");
+    Soup soup = dented_hood(n, 0.3, 0.3).dented;
+    for (int i = 0; i <= n; ++i) { // the crease row straight, as the jitter left its x
+      Point& p = soup.points[std::size_t(crease_row * (n + 1) + i)];
+      p = Point(p.x(), crease_y, hood(p.x(), crease_y));
+    }
+    for (Point& p : soup.points)
+      if (p.y() > crease_y)
+        p = Point(p.x(), p.y(), p.z() + slope * (p.y() - crease_y));
+    Surface_mesh mesh = to_mesh<Surface_mesh>(soup);
+    std::size_t visited = 0;
+    const HL::Fairing_report report = CGAL::fair_with_highlight_lines(
+        mesh, disk_region(mesh, 1.5 * 0.3), hood_lights,
+        HLP::fairing_visitor([&](const HL::Fairing_report::Iteration&) {
+          ++visited;
+          return true;
+        }));
+    if (slope == 0) {
+      EXPECT_TRUE(report.restarted_from_fill);
+      continue;
+    }
+    EXPECT_FALSE(report.restarted_from_fill);
+    EXPECT_EQ(visited, report.iterations) << "a second run was tried";
+    // The run ended where a second run is otherwise tried.
+    const std::size_t k = report.history.size();
+    ASSERT_GE(k, 3u);
+    EXPECT_TRUE(report.status == HL::Fairing_report::Status::STEP_BLOCKED ||
+                report.history[k - 2].restrained_vertices > 0 ||
+                report.history[k - 3].restrained_vertices > 0 ||
+                !(report.history.back().target_value < report.history.front().target_value))
+        << HL::to_string(report.status);
+  }
+}
+
 TEST(Fairing, CommutesWithRigidMotionAndScaling)
 {
   const Dented_hood d = dented_hood(30);
