@@ -29,7 +29,7 @@
 //   benchmark_detection ... --fairing-margin N  the automatic mode with HLP::fairing_margin(N)
 //   benchmark_detection --demo [--bending]     the regions of the demo's --detect mode
 //                                              (scripts/demo, part 3: the Beetle with a dent
-//                                              in its roof; 60 lines, 3 x 4 light setups)
+//                                              in its roof; 60 lines, 3 x 2 light setups)
 //
 // Speed: the detection (3 x 2 light setups) on the bundled beetle Loop-subdivided twice
 // (618,496 triangles), as a ratio to one compute_highlight_lines() on the same mesh measured
@@ -828,8 +828,7 @@ void demo_table()
   std::vector<HB::Irregularity> found;
   CGAL::detect_highlight_line_irregularities(
       mesh, lights, std::back_inserter(found),
-      HLP::local_residual(HLP::number_of_scales(HLP::number_of_offsets(4), scales),
-                          local_residual));
+      HLP::local_residual(HLP::number_of_scales(scales), local_residual));
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cout << "demo beetle, roof dent" << (local_residual ? "" : ", bending measure") << ": "
