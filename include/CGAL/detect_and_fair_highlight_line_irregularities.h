@@ -29,11 +29,13 @@ against the highlight lines left by the previous ones).
 
 Only the regions that are most likely defects are faired: those whose `confidence` reaches
 `minimum_confidence` (default 0.5: a compact region seen in at least half of the light setups;
-regions elongated along a feature or spread wider than a defect, `ELONGATED` and `EXTENDED`,
-fall below it). The others are reported as skipped (`Irregularity_repair::skipped`) and left
-untouched. Regions to be faired that touch are joined and faired as one
-(`Highlight_lines::join_touching_irregularities()`): faired apart, their common border would
-stay fixed in both fairings. And each is faired with a margin of `fairing_margin` rings of
+regions elongated along a feature or spread wider than a defect get a lower confidence, the
+more so the longer or wider they are: most `ELONGATED` and `EXTENDED` regions fall below it, not
+all. The kind is no proof: a dent on a flat plate can be reported `ELONGATED` with confidence
+0.68, and compact design regions of the camel head with 1). The others are reported as
+skipped (`Irregularity_repair::skipped`) and left untouched. Regions to be faired that touch
+are joined and faired as one (`Highlight_lines::join_touching_irregularities()`): faired apart,
+their common border would stay fixed in both fairings. And each is faired with a margin of `fairing_margin` rings of
 faces (by default `detection_scale`, rounded up; never across a sharp edge:
 `Highlight_lines::grown_face_region()`): a region is centred where the lines move most, often
 one flank of a defect, and a fairing moves only the inner vertices of its region (`benchmark_detection --shared`, column "whole": of the 57
