@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <random>
@@ -378,6 +379,47 @@ TEST(Fairing, SurfaceMeshAndPolyhedronAgree)
     for (std::size_t i = 0; i < c.size(); ++i)
       EXPECT_LT(CGAL::squared_distance(c[i], e[i]), 1e-20) << i;
   }
+}
+
+// The rest of a large mesh does not enter a fairing: the same hood, preceded by a far grid of
+// 20,000 faces (so that the region's faces and vertices have large, shifted indices) with a
+// hole of removed faces in it (garbage, not collected: the indices are sparse), gives the same
+// points bit for bit and the same iterations, and leaves the grid untouched.
+TEST(Fairing, FacesFarFromTheRegionDoNotChangeTheResult)
+{
+  const Dented_hood d = dented_hood(30);
+  Surface_mesh alone = to_mesh<Surface_mesh>(d.dented);
+  const HL::Fairing_report alone_report =
+      CGAL::fair_with_highlight_lines(alone, disk_region(alone, 1.5 * d.radius), hood_lights);
+  ASSERT_TRUE(alone_report.converged());
+
+  Soup combined = grid(100, 0.1, 20, 20, [](double, double) { return 0.0; });
+  const std::size_t far_vertices = combined.points.size(), far_faces = combined.triangles.size();
+  for (const Point& p : d.dented.points)
+    combined.points.push_back(p);
+  for (const auto& t : d.dented.triangles)
+    combined.triangles.push_back({t[0] + far_vertices, t[1] + far_vertices, t[2] + far_vertices});
+  Surface_mesh large = to_mesh<Surface_mesh>(combined);
+  ASSERT_EQ(num_faces(large), far_faces + d.dented.triangles.size());
+  for (std::size_t f = 5000; f < 5200; ++f) // interior faces of the far grid
+    CGAL::Euler::remove_face(halfedge(Surface_mesh::Face_index(std::uint32_t(f)), large), large);
+  ASSERT_TRUE(large.has_garbage());
+  const std::vector<Point> far_before = points_of(large);
+
+  const std::vector<face_descriptor> region = disk_region(large, 1.5 * d.radius);
+  ASSERT_FALSE(region.empty());
+  EXPECT_GE(std::size_t(*std::min_element(region.begin(), region.end())), far_faces);
+  const HL::Fairing_report large_report =
+      CGAL::fair_with_highlight_lines(large, region, hood_lights);
+  EXPECT_EQ(large_report.status, alone_report.status);
+  EXPECT_EQ(large_report.iterations, alone_report.iterations);
+  EXPECT_EQ(large_report.history.back().target_value, alone_report.history.back().target_value);
+  for (auto v : vertices(alone)) {
+    const Surface_mesh::Vertex_index w(std::uint32_t(std::size_t(v) + far_vertices));
+    EXPECT_EQ(large.point(w), alone.point(v)) << std::size_t(v);
+  }
+  for (std::size_t v = 0; v < far_vertices; ++v)
+    EXPECT_EQ(large.point(Surface_mesh::Vertex_index(std::uint32_t(v))), far_before[v]);
 }
 
 // A pit as deep as it is wide on the hood: the first run ends held back against flips, and the

@@ -5,6 +5,7 @@
 #define CGAL_HIGHLIGHT_LINES_INTERNAL_FAIRING_FACE_REGION_H
 
 #include <CGAL/Highlight_lines/Invalid_input.h>
+#include <CGAL/Highlight_lines/internal/Compact_ids.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -25,8 +26,9 @@ class SM_Face_index;
 namespace Highlight_lines {
 namespace internal {
 
-// The faces of a region, looked up by face index: the fairing asks whether a face is in the
-// region hundreds of thousands of times, which a std::set answers with a tree walk each.
+// The faces of a region, looked up by face index in a hash table of the region's size: a
+// region has hundreds of faces, a car body 10^6, and a table over every face index of the
+// mesh (cleared, then copied for the neighbourhood) cost a fairing two passes over the mesh.
 template <typename TriangleMesh, typename FaceIndexMap>
 class Face_region
 {
@@ -34,25 +36,23 @@ public:
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
   typedef typename std::vector<face_descriptor>::const_iterator const_iterator;
 
-  Face_region(FaceIndexMap fim, std::size_t index_bound) : fim_(fim), marked_(index_bound, 0) {}
+  explicit Face_region(FaceIndexMap fim) : fim_(fim) {}
 
   std::size_t index(face_descriptor f) const { return std::size_t(get(fim_, f)); }
 
   // Requires a face of the mesh.
   bool insert(face_descriptor f)
   {
-    char& mark = marked_[index(f)];
-    if (mark)
-      return false;
-    mark = 1;
-    faces_.push_back(f);
-    return true;
+    bool inserted = false;
+    ids_.insert(index(f), int(faces_.size()), inserted);
+    if (inserted)
+      faces_.push_back(f);
+    return inserted;
   }
   // 1 for a face of the mesh in the region, else 0.
   std::size_t count(face_descriptor f) const
   {
-    const std::size_t i = index(f);
-    return i < marked_.size() && marked_[i] ? 1 : 0;
+    return ids_.find(index(f)) != Compact_ids::none ? 1 : 0;
   }
   const_iterator begin() const { return faces_.begin(); } // in the order of insertion
   const_iterator end() const { return faces_.end(); }
@@ -61,7 +61,7 @@ public:
 
 private:
   FaceIndexMap fim_;
-  std::vector<char> marked_;
+  Compact_ids ids_{false, 0}; // face index -> position in faces_
   std::vector<face_descriptor> faces_;
 };
 
@@ -114,7 +114,7 @@ Face_region<TriangleMesh, FaceIndexMap> checked_region(const TriangleMesh& tm,
     else
       return face_with_index[index] == f;
   };
-  Face_region<TriangleMesh, FaceIndexMap> region(fim, index_bound);
+  Face_region<TriangleMesh, FaceIndexMap> region(fim);
   for (face_descriptor f : faces_in) {
     // A foreign face's index is read from the foreign face; it is only compared below.
     const std::size_t index = f == null_face ? index_bound : std::size_t(get(fim, f));
