@@ -112,6 +112,7 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -649,8 +650,14 @@ void run_anywhere(std::ostream& out, const Options& options)
 int main(int argc, char** argv)
 {
   Options options;
-  if (!parse(argc, argv, options))
+  try {
+    if (!parse(argc, argv, options))
+      return 2;
+  } catch (const std::logic_error&) { // std::stoi / std::stod: not a number, or out of range
+    std::cerr << "benchmark_real_dents: an option's value is not a number in range (see "
+                 "--help)\n";
     return 2;
+  }
   if (options.anywhere > 0) {
     run_anywhere(std::cout, options);
     return 0;
