@@ -422,6 +422,49 @@ TEST(Fairing, FacesFarFromTheRegionDoNotChangeTheResult)
     EXPECT_EQ(large.point(Surface_mesh::Vertex_index(std::uint32_t(v))), far_before[v]);
 }
 
+// The order of the region's faces does not enter the fairing (bit for bit), nor, but for
+// rounding, the order of the mesh's faces and of their corners.
+TEST(Fairing, IndependentOfFaceOrder)
+{
+  const Dented_hood d = dented_hood(30);
+  Surface_mesh reference = to_mesh<Surface_mesh>(d.dented);
+  std::vector<face_descriptor> region = disk_region(reference, 1.5 * d.radius);
+  const HL::Fairing_report reference_report =
+      CGAL::fair_with_highlight_lines(reference, region, hood_lights);
+  ASSERT_TRUE(reference_report.converged());
+  ASSERT_GE(reference_report.iterations, 2u);
+
+  std::mt19937 rng(11);
+  Surface_mesh same_faces = to_mesh<Surface_mesh>(d.dented);
+  std::shuffle(region.begin(), region.end(), rng);
+  const HL::Fairing_report region_shuffled =
+      CGAL::fair_with_highlight_lines(same_faces, region, hood_lights);
+  EXPECT_EQ(region_shuffled.iterations, reference_report.iterations);
+  EXPECT_EQ(points_of(same_faces), points_of(reference));
+
+  Soup shuffled = d.dented;
+  std::shuffle(shuffled.triangles.begin(), shuffled.triangles.end(), rng);
+  for (auto& t : shuffled.triangles)
+    std::rotate(t.begin(), t.begin() + std::ptrdiff_t(rng() % 3), t.end());
+  Surface_mesh reordered = to_mesh<Surface_mesh>(shuffled);
+  const HL::Fairing_report reordered_report = CGAL::fair_with_highlight_lines(
+      reordered, disk_region(reordered, 1.5 * d.radius), hood_lights);
+  EXPECT_EQ(reordered_report.status, reference_report.status);
+  EXPECT_EQ(reordered_report.iterations, reference_report.iterations);
+  // The vertices keep the order of the soup's points.
+  const std::vector<Point> a = points_of(reference), b = points_of(reordered);
+  ASSERT_EQ(a.size(), b.size());
+  double largest_move = 0, largest_difference = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    largest_move =
+        std::max(largest_move, std::sqrt(CGAL::squared_distance(a[i], d.dented.points[i])));
+    largest_difference =
+        std::max(largest_difference, std::sqrt(CGAL::squared_distance(a[i], b[i])));
+  }
+  EXPECT_GT(largest_move, 0.2 * d.depth);
+  EXPECT_LT(largest_difference, 1e-9 * largest_move);
+}
+
 // A pit as deep as it is wide on the hood: the first run ends held back against flips, and the
 // second one, from the region filled by Polygon_mesh_processing::fair() on the mesh type itself,
 // is kept. Surface_mesh and Polyhedron_3 agree on it, and the pit is gone.
