@@ -42,6 +42,9 @@ namespace pic = highlight_picture;
 
 namespace {
 
+// Below this many movable vertices the program suggests a larger region.
+constexpr std::size_t few_movable_vertices = 10;
+
 const char* usage =
     "usage: fair_with_highlight_lines [MESH] [options]\n"
     "\n"
@@ -505,6 +508,14 @@ int main(int argc, char** argv)
       std::cout << "note: " << report.number_of_sliver_triangles
                 << " triangles of the region have a corner below 5 degrees; if the faired "
                    "surface bends away from its surroundings, try --mean-curvature\n";
+    // A vertex moves only if its two-ring lies in the region: a region a few edges wide, as
+    // the default radius gives on a coarse mesh, leaves the fairing almost nothing to move.
+    if (report.number_of_movable_vertices < few_movable_vertices)
+      std::cout << "note: only " << report.number_of_movable_vertices
+                << " movable vertices (a vertex moves if its two-ring lies in the region): "
+                << (o.region_file.empty() ? "a larger --radius (now " + std::to_string(radius) + ")"
+                                          : std::string("a larger region"))
+                << " gives the fairing room\n";
     if (restrained > 0)
       std::cout << "up to " << restrained << " vertices per step were held back where moving "
                 << "them would have flipped a triangle\n";
