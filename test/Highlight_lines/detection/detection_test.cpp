@@ -1354,9 +1354,8 @@ TEST(DetectAndFair, TheFairingMarginStopsAtSharpEdges)
 // anything moves, on either mesh type.
 TEST(DetectAndFair, FairsWithTheCallersMargin)
 {
-  test::Soup soup = test::grid(50, 2.0 / 50, -1, -1, test::hood, 0.3, 6);
-  HB::Mesh mesh = test::to_mesh<HB::Mesh>(soup);
-  ASSERT_EQ(HB::inject_defects(mesh, 1, 4.0, 0.5, 6, [](auto) { return true; }).size(), 1u);
+  test::Soup soup;
+  HB::Mesh mesh = HB::hood_with_one_defect(soup);
   const HB::Mesh dented = mesh;
   const auto lights = HL::default_light_setup(mesh, HLP::number_of_lines(30));
   for (int margin : {0, 1}) {
@@ -1436,11 +1435,8 @@ TEST(DetectAndFair, FairsADentNextToACreaseWithoutContinuingTheCrease)
 
 TEST(DetectAndFair, SurfaceMeshAndPolyhedronAgree)
 {
-  test::Soup soup = test::grid(50, 2.0 / 50, -1, -1, test::hood, 0.3, 6);
-  HB::Mesh mesh = test::to_mesh<HB::Mesh>(soup);
-  ASSERT_EQ(HB::inject_defects(mesh, 1, 4.0, 0.5, 6, [](auto) { return true; }).size(), 1u);
-  for (auto v : vertices(mesh))
-    soup.points[std::size_t(v)] = mesh.point(v);
+  test::Soup soup;
+  HB::Mesh mesh = HB::hood_with_one_defect(soup);
   test::Polyhedron polyhedron = test::to_mesh<test::Polyhedron>(soup);
   const auto lights = HL::default_light_setup(mesh, HLP::number_of_lines(30));
   const auto a = CGAL::detect_and_fair_highlight_line_irregularities(mesh, lights);

@@ -81,11 +81,8 @@ double largest_difference(const HB::Mesh& a, const Open_mesh& b)
 
 TEST(OpenMesh, AutomaticModeAgreesWithSurfaceMesh)
 {
-  test::Soup soup = test::grid(50, 2.0 / 50, -1, -1, test::hood, 0.3, 6);
-  HB::Mesh mesh = test::to_mesh<HB::Mesh>(soup);
-  ASSERT_EQ(HB::inject_defects(mesh, 1, 4.0, 0.5, 6, [](auto) { return true; }).size(), 1u);
-  for (auto v : vertices(mesh))
-    soup.points[std::size_t(v)] = mesh.point(v);
+  test::Soup soup;
+  HB::Mesh mesh = HB::hood_with_one_defect(soup);
   Open_mesh open_mesh = to_open_mesh(soup);
   const Open_mesh dented = open_mesh;
   Open_mesh_point_map points;

@@ -266,6 +266,20 @@ inline std::vector<bool> genuine_regions(const Mesh& mesh,
   return genuine;
 }
 
+/// The detection tests' dented hood: a 50 x 50 grid over [-1, 1]^2 (jitter 0.3, seed 6) lifted
+/// by test::hood, with one defect of radius 4 ē and height 0.5 ē (seed 6). `soup` receives the
+/// dented points, so that the same mesh can be built as another type.
+inline Mesh hood_with_one_defect(test::Soup& soup)
+{
+  soup = test::grid(50, 2.0 / 50, -1, -1, test::hood, 0.3, 6);
+  Mesh mesh = test::to_mesh<Mesh>(soup);
+  if (inject_defects(mesh, 1, 4.0, 0.5, 6, [](auto) { return true; }).size() != 1)
+    throw std::logic_error("hood_with_one_defect(): the defect found no place");
+  for (auto v : vertices(mesh))
+    soup.points[std::size_t(v)] = mesh.point(v);
+  return mesh;
+}
+
 // The bundled demo (scripts/demo, part 3): the Beetle with the dent fair_with_highlight_lines
 // presses into its roof; `centre` is the dent's centre vertex.
 inline Mesh demo_beetle(vertex_descriptor& centre)
