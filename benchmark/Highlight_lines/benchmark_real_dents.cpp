@@ -73,7 +73,7 @@
 //              HL::Invalid_input, HL::Fairing_failure or another std::exception, or PMP::fair
 //              returning false)
 //   status     ours: HL::to_string(report.status) (CONVERGED, ITERATION_LIMIT, STEP_BLOCKED,
-//              ...), "(refilled)" where it ran again from PMP::fair's fill of the region
+//              STALLED, ...), "(refilled)" where it ran again from PMP::fair's fill of the region
 //              (Fairing_report::restarted_from_fill); conv: report.converged(), xu_flow: its
 //              convergence flag; pmp_fair: its return value
 //   iters      iterations (pmp_fair: 1); the summaries give the median and the maximum

@@ -69,9 +69,11 @@ after the iteration bound.
   flip faces, only the vertices of those faces are held back (their bounds are tightened and
   the program solved again; failing that, their displacements are scaled down, down to zero):
   one bad triangle never stops the others. The report counts the vertices held back.
-- *Stalls are not failures*: if the iteration bound is reached, or two steps in a row cannot
-  move any vertex, the fairing stops and leaves the mesh at the iterate of lowest `F`, with the
-  report's status saying why (`ITERATION_LIMIT`, `STEP_BLOCKED`).
+- *Stalls are not failures*: if the iteration bound is reached, two steps in a row cannot
+  move any vertex, or five steps in a row held back against flips do not lower `F` below its
+  lowest value (scans with folded triangles), the fairing stops and leaves the mesh at the
+  iterate of lowest `F`, with the report's status saying why (`ITERATION_LIMIT`,
+  `STEP_BLOCKED`, `STALLED`).
 
 - *Inside the region*: a vertex is inside when all its faces are in the region and it is not
   on a mesh border; a highlight node is inside when it lies inside an edge whose two faces are

@@ -33,7 +33,12 @@ struct Fairing_report
     STOPPED_BY_VISITOR,
     /// two steps in a row could not move any vertex without flipping a face; the mesh is the
     /// iterate of lowest `F`
-    STEP_BLOCKED
+    STEP_BLOCKED,
+    /// `F` stalled: five steps in a row held vertices back against flips, and none of them
+    /// lowered `F` by 10^-3 of itself below its lowest value so far (on scans with folded
+    /// triangles, whose energy the programs predict poorly, the steps would otherwise shrink
+    /// slowly to ε while `F` wanders); the mesh is the iterate of lowest `F`
+    STALLED
   };
 
   /// One iteration (§3.7): the energies of the current mesh when the iteration started, then
@@ -104,7 +109,8 @@ struct Fairing_report
   /// fields are zero).
   std::vector<Iteration> history;
   /// Whether the mesh returned is an earlier iterate than the last, because the fairing stopped
-  /// short of convergence (`ITERATION_LIMIT` or `STEP_BLOCKED`) after a step that raised `F`.
+  /// short of convergence (`ITERATION_LIMIT`, `STEP_BLOCKED` or `STALLED`) after a step that raised
+  /// `F`.
   bool returned_best_iterate = false;
 
   /// Whether the mesh returned comes from a second run, started from the region filled by
@@ -143,6 +149,8 @@ inline const char* to_string(Fairing_report::Status status)
     return "STOPPED_BY_VISITOR";
   case Fairing_report::Status::STEP_BLOCKED:
     return "STEP_BLOCKED";
+  case Fairing_report::Status::STALLED:
+    return "STALLED";
   }
   return "UNKNOWN";
 }

@@ -30,6 +30,7 @@
 #include <fstream>
 #include <functional>
 #include <iterator>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <string>
@@ -87,6 +88,16 @@ std::string describe(const HL::Fairing_report& report)
   return out.str();
 }
 
+// The lowest F of the iterates the fairing stepped from (history[i].target_value is F before
+// step i).
+double lowest_target_value(const HL::Fairing_report& report)
+{
+  double lowest = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < report.iterations && i < report.history.size(); ++i)
+    lowest = (std::min)(lowest, report.history[i].target_value);
+  return lowest;
+}
+
 bool all_finite(const Mesh& mesh)
 {
   for (Mesh::Vertex_index v : mesh.vertices()) {
@@ -116,7 +127,13 @@ bool fair_with_hard_guarantees(const HB::Real_dent_case& c, HL::Fairness_energy 
     ADD_FAILURE() << "exception: " << e.what();
     return false;
   }
-  EXPECT_TRUE(report.converged()) << describe(report);
+  // A stall (scan-like triangulations) is a valid end: the mesh is then the iterate of lowest F.
+  EXPECT_TRUE(report.converged() || report.status == HL::Fairing_report::Status::STALLED)
+      << describe(report);
+  if (report.status == HL::Fairing_report::Status::STALLED) {
+    EXPECT_LE(report.history.back().target_value, lowest_target_value(report) * (1 + 1e-9))
+        << describe(report);
+  }
   EXPECT_LE(report.iterations, max_iterations) << describe(report);
   EXPECT_TRUE(all_finite(result));
   EXPECT_EQ(HB::count_moved_vertices_outside(result, c.input, movable), 0u);
@@ -365,6 +382,53 @@ INSTANTIATE_TEST_SUITE_P(RealDent, RealDentTest, ::testing::ValuesIn(HB::shared_
                                ch = '_';
                            return name;
                          });
+
+// A stall on a scan-like triangulation (the Beetle's case of scan_like_dent_cases(): 191 of the
+// region's 767 triangles folded). The programs, their weights frozen, predict F poorly there:
+// F stops falling while the trust region halves step after step and the vertices held against
+// flips creep (26 iterations before the rule, to steps below ε ē, ending at an F 10 % above the
+// lowest). The fairing ends five held steps after the last iterate that lowered F by 10^-3 of
+// itself, at the iterate of lowest F, with the status STALLED.
+TEST(RealDentStall, AStallEndsFiveHeldStepsAfterTheLastProgressAtTheIterateOfLowestF)
+{
+  Mesh mesh;
+  if (!std::ifstream(test::shared_data("beetle.off")))
+    GTEST_SKIP() << test::shared_data("beetle.off") << " not found";
+  ASSERT_TRUE(test::read_shared_mesh("beetle.off", mesh));
+  const std::vector<HB::Real_dent_case> cases = scan_like_dent_cases(mesh, "beetle");
+  ASSERT_EQ(cases.size(), 1u);
+  const HB::Real_dent_case& c = cases.front();
+  std::vector<Mesh::Vertex_index> movable;
+  HL::movable_vertices(c.input, c.region, std::back_inserter(movable));
+  Mesh result;
+  ASSERT_TRUE(
+      fair_with_hard_guarantees(c, HL::Fairness_energy::CURVATURE_VARIATION, movable, result));
+  Mesh again = c.input;
+  const HL::Fairing_report report = CGAL::fair_with_highlight_lines(again, c.region, c.lights);
+  ASSERT_EQ(report.status, HL::Fairing_report::Status::STALLED) << describe(report);
+  EXPECT_STREQ(HL::to_string(report.status), "STALLED");
+  EXPECT_FALSE(report.converged());
+  ASSERT_EQ(report.history.size(), report.iterations + 1) << describe(report);
+  // The last iterate that made progress, by the rule's definition.
+  std::size_t last_progress = 0;
+  double lowest = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < report.iterations; ++i) {
+    if (report.history[i].target_value < (1 - 1e-3) * lowest)
+      last_progress = i;
+    lowest = (std::min)(lowest, report.history[i].target_value);
+  }
+  EXPECT_EQ(report.iterations - last_progress, 5u) << describe(report);
+  for (std::size_t i = report.iterations - 5; i < report.iterations; ++i)
+    EXPECT_GT(report.history[i].restrained_vertices, 0u) << "step " << i;
+  // The mesh returned is the iterate of lowest F (its energies are the history's last entry),
+  // and it is the same mesh as the first call's, bit for bit.
+  EXPECT_NEAR(report.history.back().target_value, lowest, 1e-9 * lowest) << describe(report);
+  const std::size_t differing =
+      std::size_t(std::count_if(movable.begin(), movable.end(), [&](Mesh::Vertex_index v) {
+        return again.point(v) != result.point(v);
+      }));
+  EXPECT_EQ(differing, 0u);
+}
 
 // The fairing also stops when all the steps still to come, estimated from the geometric tail of
 // the last three, or of the last two where both were the programs' own minimisers, would
