@@ -46,9 +46,11 @@ activate the bounds in the order the step crosses them. The systems are solved w
 supernodal \f$ LDL^T \f$ factorisation in a fill-reducing ordering, analysed once per sparsity
 pattern (reuse the solver object in an iterative method), and bordered by the changed
 variables while that is cheaper than a new factorisation. After `set_warm_start()`, the
-factorisation left by the previous `solve()` preconditions conjugate gradients on the free
-subsystems before a new one is made; without a warm start every `solve()` factorises afresh,
-so that a reused solver gives exactly the result of a new one. If the active set cycles, the
+factorisation left by the previous `solve()` is reused before a new one is made: bordered if
+\f$ P \f$ has not changed since (neither `resize()` nor `set_P()` was called: the same program
+solved again with other bounds, \f$ q \f$ or \f$ r \f$), else as the preconditioner of
+conjugate gradients on the free subsystems. Without a warm start every `solve()` factorises
+afresh, so that a reused solver gives exactly the result of a new one. If the active set cycles, the
 primal-dual iteration limit is reached or a free subsystem is singular, a monotone projected
 Newton method (Bertsekas) continues from the best feasible point found, so that the solve
 cannot cycle.
@@ -241,19 +243,27 @@ private:
       return report;
     }
 
-    problem_.assemble();
+    // A program solved again with other bounds (as the fairing does where a step would flip a
+    // face) keeps its matrix, and after a warm start the factorisation of it that the last
+    // solve left.
+    const bool same_matrix = problem_.is_assembled();
+    if (same_matrix)
+      problem_.update_q_norm();
+    else
+      problem_.assemble();
     if (n == 0) {
       x_.resize(0);
       problem_.evaluate(x_, report);
       report.status = Box_QP_status::OPTIMAL;
       return report;
     }
-    // The factorisation left by the previous solve() is of another matrix. After a warm start
-    // (the next program of an iterative method, alike the last one) it still preconditions
-    // conjugate gradients well, which is much cheaper than a new factorisation.
+    // Unless the matrix is the same, the factorisation left by the previous solve() is of
+    // another matrix. After a warm start (the next program of an iterative method, alike the
+    // last one) it still preconditions conjugate gradients well, which is much cheaper than a
+    // new factorisation.
     has_factorization_ = has_factorization_ && had_warm_start &&
                          inertia_ == Inertia::POSITIVE_DEFINITE && factored_free_.size() == n;
-    factorization_is_stale_ = has_factorization_;
+    factorization_is_stale_ = has_factorization_ && (!same_matrix || factorization_is_stale_);
     preconditioned_iterations_ = 0;
     initialize_states(had_warm_start ? &x0 : nullptr);
 

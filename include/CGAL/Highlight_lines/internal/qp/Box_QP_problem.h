@@ -47,6 +47,7 @@ public:
     u_.setConstant(static_cast<Eigen::Index>(n), std::numeric_limits<double>::infinity());
     setter_error_.clear();
     P_.resize(0, 0);
+    assembled_ = false;
   }
 
   std::size_t size() const { return n_; }
@@ -57,6 +58,7 @@ public:
   {
     if (i > j)
       return;
+    assembled_ = false;
     if (j >= n_) {
       note_setter_error("set_P", i, j);
       return;
@@ -72,6 +74,7 @@ public:
 
   void add_P(const Sparse_matrix& matrix)
   {
+    assembled_ = false;
     if (static_cast<std::size_t>(matrix.rows()) != n_ ||
         static_cast<std::size_t>(matrix.cols()) != n_) {
       if (setter_error_.empty()) {
@@ -235,8 +238,15 @@ public:
       for (Sparse_matrix::InnerIterator it(P_, col); it; ++it)
         row_sums[it.row()] += std::abs(it.value());
     P_norm_ = n > 0 ? row_sums.maxCoeff() : 0.;
-    q_norm_ = n > 0 ? q_.cwiseAbs().maxCoeff() : 0.;
+    update_q_norm();
+    assembled_ = true;
   }
+
+  // Whether P is assembled and unchanged since (only q, r and the bounds may have changed, as
+  // when a program is solved again with tighter bounds): assemble() would give the same matrix.
+  bool is_assembled() const { return assembled_; }
+
+  void update_q_norm() { q_norm_ = n_ > 0 ? q_.cwiseAbs().maxCoeff() : 0.; }
 
   const Sparse_matrix& P() const { return P_; }
   const Eigen::VectorXd& q() const { return q_; }
@@ -368,6 +378,7 @@ private:
   std::vector<int> upper_rows_;
   std::vector<double> upper_values_;
   bool dense_ = false;
+  bool assembled_ = false;           // see is_assembled()
   std::vector<double> dense_values_; // column j at j (j + 1) / 2, rows 0 to j
   std::vector<unsigned char> dense_present_;
   Eigen::VectorXd q_, l_, u_, diagonal_;
