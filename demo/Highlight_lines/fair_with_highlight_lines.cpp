@@ -519,6 +519,17 @@ int main(int argc, char** argv)
     if (restrained > 0)
       std::cout << "up to " << restrained << " vertices per step were held back where moving "
                 << "them would have flipped a triangle\n";
+    // A crumpled triangulation (a raw scan): moving vertices along their normals cannot
+    // untangle folded triangles, so F stops falling while vertices are held back.
+    if (report.status == HL::Fairing_report::Status::STALLED) {
+      std::cout << "note: F stopped falling over five steps that held vertices back against flips";
+      if (report.number_of_folded_triangles + report.number_of_sliver_triangles > 0)
+        std::cout << "; " << report.number_of_folded_triangles
+                  << " triangles of the region are folded and " << report.number_of_sliver_triangles
+                  << " have a corner below 5 degrees: moving vertices along their normals "
+                     "cannot untangle such a triangulation";
+      std::cout << "\n";
+    }
     if (report.returned_best_iterate)
       std::cout << "the mesh is the iterate of lowest F, not the last one\n";
     if (report.restarted_from_fill)
