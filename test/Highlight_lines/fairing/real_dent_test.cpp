@@ -13,6 +13,7 @@
 #include "real_dent_cases.h"
 #include "flipped_faces.h"
 #include "forwarding_solver.h"
+#include "test_meshes.h"
 
 #include <CGAL/Highlight_lines/Fairing_report.h>
 #include <CGAL/Highlight_lines/default_light_setup.h>
@@ -24,6 +25,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <exception>
@@ -428,6 +430,38 @@ TEST(RealDentStall, AStallEndsFiveHeldStepsAfterTheLastProgressAtTheIterateOfLow
         return again.point(v) != result.point(v);
       }));
   EXPECT_EQ(differing, 0u);
+
+  // A Polyhedron_3 with the same vertices and faces, in the same order, stalls alike.
+  test::Soup soup;
+  for (Mesh::Vertex_index v : c.input.vertices())
+    soup.points.push_back(c.input.point(v));
+  for (Mesh::Face_index f : c.input.faces()) {
+    std::array<std::size_t, 3> corners{};
+    std::size_t k = 0;
+    for (Mesh::Vertex_index v : CGAL::vertices_around_face(c.input.halfedge(f), c.input))
+      corners[k++] = std::size_t(v);
+    soup.triangles.push_back(corners);
+  }
+  test::Polyhedron polyhedron = test::to_mesh<test::Polyhedron>(soup);
+  ASSERT_EQ(polyhedron.size_of_facets(), c.input.number_of_faces());
+  const std::vector<boost::graph_traits<test::Polyhedron>::face_descriptor> polyhedron_faces(
+      faces(polyhedron).begin(), faces(polyhedron).end());
+  std::vector<boost::graph_traits<test::Polyhedron>::face_descriptor> polyhedron_region;
+  for (Mesh::Face_index f : c.region)
+    polyhedron_region.push_back(polyhedron_faces[std::size_t(f)]);
+  const HL::Fairing_report on_polyhedron =
+      CGAL::fair_with_highlight_lines(polyhedron, polyhedron_region, c.lights);
+  EXPECT_EQ(on_polyhedron.status, HL::Fairing_report::Status::STALLED) << describe(on_polyhedron);
+  EXPECT_EQ(on_polyhedron.iterations, report.iterations);
+  const std::vector<boost::graph_traits<test::Polyhedron>::vertex_descriptor> polyhedron_vertices(
+      vertices(polyhedron).begin(), vertices(polyhedron).end());
+  double largest_difference = 0;
+  for (Mesh::Vertex_index v : movable) {
+    const auto& p = polyhedron_vertices[std::size_t(v)]->point();
+    largest_difference =
+        (std::max)(largest_difference, std::sqrt(CGAL::squared_distance(p, result.point(v))));
+  }
+  EXPECT_LE(largest_difference, 1e-9 * c.mean_edge_length);
 }
 
 // The fairing also stops when all the steps still to come, estimated from the geometric tail of
