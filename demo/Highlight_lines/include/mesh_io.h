@@ -7,7 +7,9 @@
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/shape_predicates.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Highlight_lines/Highlight_line_sweeper.h>
@@ -65,11 +67,25 @@ inline std::string output_extension(const std::string& input, const std::string&
   return writable_extension(e) ? e : ".off";
 }
 
+// A Surface_mesh compacts its indices after faces were removed (the programs write face ids);
+// other meshes have nothing to collect.
+template <typename Point>
+void compact_indices(CGAL::Surface_mesh<Point>& mesh)
+{
+  mesh.collect_garbage();
+}
+template <typename Mesh>
+void compact_indices(Mesh&)
+{
+}
+
 // Reads a triangle mesh from any format CGAL reads (OFF, OBJ, PLY, STL, by the extension).
 // A file that is not a valid polygon mesh as it stands (a soup: triangles of an STL export
 // that are not consistently oriented, duplicated or degenerate faces, non-manifold edges) is
 // repaired and oriented; faces with more than three corners (quads of a CAD export) are
-// triangulated. Each of these is said in a note on `notes`. Returns false if no face could be read.
+// triangulated; triangles whose corners are collinear (scans and CAD exports hold a few; the
+// highlight line model has no normal for them and refuses them) are removed. Each of these is
+// said in a note on `notes`. Returns false if no face could be read.
 template <typename Mesh>
 bool read_triangle_mesh(const std::string& path, Mesh& mesh, std::ostream& notes = std::cout)
 {
@@ -102,6 +118,20 @@ bool read_triangle_mesh(const std::string& path, Mesh& mesh, std::ostream& notes
     notes << "note: " << polygonal << " of the " << before << " faces of " << path
           << " have more than three corners: triangulated (" << num_faces(mesh)
           << " triangles; the first triangle of a face keeps its id, the others are added)\n";
+  }
+  std::size_t degenerate = 0;
+  for (auto f : faces(mesh))
+    degenerate += PMP::is_degenerate_triangle_face(f, mesh) ? 1 : 0;
+  if (degenerate > 0) {
+    const bool removed = PMP::remove_degenerate_faces(mesh);
+    compact_indices(mesh);
+    if (is_empty(mesh))
+      return false;
+    notes << "note: degenerate faces (collinear corners) in " << path << ": " << degenerate << ", "
+          << (removed ? "removed" : "not all could be removed")
+          << " with Polygon_mesh_processing::remove_degenerate_faces(), leaving "
+          << num_vertices(mesh) << " vertices and " << num_faces(mesh)
+          << " faces; face ids refer to this mesh\n";
   }
   return true;
 }
