@@ -15,6 +15,8 @@
 //
 //   benchmark_detection --shared [--seeds N]   the shared meshes only (N x 4 defects/height)
 //   benchmark_detection --mesh NAME            one shared mesh
+//   benchmark_detection --mesh-file PATH ...   meshes the team does not have instead (repeatable;
+//                                              read as the command-line programs read them)
 //   benchmark_detection --local [--mesh NAME]  the detection near each defect only
 //                                              (face_range: the faces within 3R of it)
 //   benchmark_detection ... --bending          the same with HLP::local_residual(false)
@@ -35,6 +37,7 @@
 // (618,496 triangles), as a ratio to one compute_highlight_lines() on the same mesh measured
 // in the same run.
 #include "detection_evaluation.h"
+#include "mesh_io.h"
 
 #include <CGAL/Highlight_lines/default_light_setup.h>
 #include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
@@ -248,10 +251,13 @@ struct Table_row
               above_undented = 0, rank_sum = 0, faired = 0, design_faired = 0, whole = 0;
 };
 
-// Reads the shared mesh `name`; says so and returns false if it is missing.
+// Reads the shared mesh `name`, or the mesh at `name` if it is a path (--mesh-file: a mesh the
+// team does not have, read as the command-line programs read a user's file); says so and
+// returns false if it is missing.
 bool read_shared_mesh(const std::string& name, HB::Mesh& mesh)
 {
-  if (test::read_shared_mesh(name, mesh))
+  if (name.find('/') == std::string::npos ? test::read_shared_mesh(name, mesh)
+                                          : mesh_io::read_triangle_mesh(name, mesh, std::cerr))
     return true;
   std::cout << "\n" << name << ": not found, skipped\n";
   return false;
@@ -905,7 +911,7 @@ int main(int argc, char** argv)
 {
   std::vector<char*> args;
   bool curves_only = false, hood = true, local = false, demo = false, misses = false,
-       repair = false, limits = true;
+       repair = false, limits = true, mesh_files_given = false;
   unsigned seeds = 2;
   std::vector<std::string> meshes{"beetle.off",  "bunny.off",      "camelhead.off",
                                   "fandisk.off", "rocker-arm.off", "spot.off"};
@@ -916,7 +922,14 @@ int main(int argc, char** argv)
       curves_only = true, hood = false;
     else if (std::strcmp(argv[i], "--mesh") == 0 && i + 1 < argc)
       meshes.assign(1, argv[++i]), curves_only = true, hood = false;
-    else if (std::strcmp(argv[i], "--local") == 0) // the detection near each defect only
+    else if (std::strcmp(argv[i], "--mesh-file") == 0 && i + 1 < argc) { // repeatable
+      if (!mesh_files_given)
+        meshes.clear();
+      mesh_files_given = true;
+      const std::string path = argv[++i]; // a path: read_shared_mesh() tells it by its '/'
+      meshes.push_back(path.find('/') == std::string::npos ? "./" + path : path);
+      curves_only = true, hood = false;
+    } else if (std::strcmp(argv[i], "--local") == 0) // the detection near each defect only
       local = true, curves_only = true, hood = false;
     else if (std::strcmp(argv[i], "--misses") == 0) // why defects are not located
       misses = true, curves_only = true, hood = false;

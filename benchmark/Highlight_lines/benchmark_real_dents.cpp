@@ -4,7 +4,7 @@
 //
 //   benchmark_real_dents [--table] [--seed N] [--centres N] [--repetitions N] [--mesh STEM]
 //                        [--dump DIR] [--jitter J] [--from-truth] [--far-grid N] [--anywhere N]
-//                        [--depths D1,D2,...]
+//                        [--depths D1,D2,...] [--mesh-file PATH]...
 //
 // The table mode is the only mode (`--table` is accepted and is the default): one Markdown
 // table per case, then two summary tables (one row per method): over all the cases, and over
@@ -24,6 +24,12 @@
 // summaries. `--dump DIR` writes each case's dented and undented mesh
 // (DIR/<case>_input.off, DIR/<case>_truth.off) and region (DIR/<case>_region.txt, face
 // indices).
+//
+// Meshes the team does not have: `--mesh-file PATH` (repeatable) replaces the shared meshes by
+// the given files, read as the command-line programs read a user's file
+// (mesh_io::read_triangle_mesh(): OFF, OBJ, PLY, STL; soups repaired, polygons triangulated,
+// degenerate faces removed, each said on stderr), named by their file name without its
+// extension, in both modes.
 //
 // Large meshes: `--far-grid N` adds to each case's mesh (dented and undented) a grid of 2 N²
 // triangles beyond its bounding box, far from every region: a fairing's time should not grow
@@ -92,6 +98,7 @@
 //   outside    vertices outside the movable set that moved (bit-exact comparison)
 //   ms, x pmp  median time of the method and its ratio to PMP::fair's median
 #include "fairing_quality.h"
+#include "mesh_io.h"
 #include "real_dent_cases.h"
 #include "surface_diffusion_flow.h"
 
@@ -146,7 +153,29 @@ struct Options
   int far_grid = 0;                        // cells per side of the grid added far away
   std::size_t anywhere = 0;                // regions per mesh of the --anywhere mode (0: the table)
   std::vector<double> depths = {1.0, 0.3}; // in ē
+  std::vector<std::string> mesh_files;     // --mesh-file: instead of the shared meshes
 };
+
+// The meshes to run on, as (name, path): the shared meshes, or the --mesh-file ones.
+std::vector<std::pair<std::string, std::string>> mesh_sources(const Options& options)
+{
+  std::vector<std::pair<std::string, std::string>> sources;
+  if (options.mesh_files.empty())
+    for (const std::string stem : HB::shared_mesh_stems())
+      sources.emplace_back(stem, test::shared_data(stem + ".off"));
+  for (const std::string& path : options.mesh_files) {
+    const std::size_t slash = path.find_last_of("/\\");
+    std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+    name = name.substr(0, name.find_last_of('.'));
+    sources.emplace_back(name, path);
+  }
+  if (!options.only_mesh.empty())
+    sources.erase(
+        std::remove_if(sources.begin(), sources.end(),
+                       [&](const auto& source) { return source.first != options.only_mesh; }),
+        sources.end());
+  return sources;
+}
 
 // Appends an n x n grid of triangles beyond the bounding box of `mesh` (faces and vertices get
 // the next indices: the regions stay valid).
@@ -557,6 +586,8 @@ bool parse(int argc, char** argv, Options& options)
       options.from_truth = true;
     else if (a == "--far-grid")
       options.far_grid = std::stoi(value());
+    else if (a == "--mesh-file")
+      options.mesh_files.push_back(value());
     else if (a == "--anywhere")
       options.anywhere = std::size_t(std::stoul(value()));
     else if (a == "--depths") {
@@ -572,7 +603,7 @@ bool parse(int argc, char** argv, Options& options)
     } else {
       std::cerr << "usage: benchmark_real_dents [--table] [--seed N] [--centres N] "
                    "[--repetitions N] [--mesh STEM] [--dump DIR] [--jitter J] [--from-truth] "
-                   "[--far-grid N] [--anywhere N] [--depths D1,D2,...]\n";
+                   "[--far-grid N] [--anywhere N] [--depths D1,D2,...] [--mesh-file PATH]...\n";
       return false;
     }
   }
@@ -588,13 +619,11 @@ void run_anywhere(std::ostream& out, const Options& options)
       << "| mesh | regions | ours | pmp_fair | ours_willmore | ours moves more than pmp_fair | "
          "tail: ours > 2 ē and > 2 x pmp_fair | ours' largest move / ē |\n"
       << "|---|---|---|---|---|---|---|---|\n";
-  for (const std::string stem : HB::shared_mesh_stems()) {
-    if (!options.only_mesh.empty() && options.only_mesh != stem)
-      continue;
+  for (const auto& [stem, path] : mesh_sources(options)) {
     Mesh mesh;
-    if (!test::read_shared_mesh(stem + ".off", mesh)) {
-      out << "| " << stem << " | cannot read " << test::shared_data(stem + ".off")
-          << " | | | | | | |\n";
+    if (!(options.mesh_files.empty() ? test::read_shared_mesh(stem + ".off", mesh)
+                                     : mesh_io::read_triangle_mesh(path, mesh, std::cerr))) {
+      out << "| " << stem << " | cannot read " << path << " | | | | | | |\n";
       continue;
     }
     const double e = test::mean_edge_length(mesh);
@@ -681,13 +710,11 @@ int main(int argc, char** argv)
   std::size_t cases_total = 0, cases_with_slivers = 0, cases_with_folds = 0, most_slivers = 0,
               most_folded = 0;
   std::string most_slivers_case, most_folded_case;
-  for (const std::string stem : HB::shared_mesh_stems()) {
-    if (!options.only_mesh.empty() && options.only_mesh != stem)
-      continue;
+  for (const auto& [stem, path] : mesh_sources(options)) {
     Mesh mesh;
-    if (!test::read_shared_mesh(stem + ".off", mesh)) {
-      out << "\n## " << stem << ": cannot read " << test::shared_data(stem + ".off")
-          << ", skipped\n";
+    if (!(options.mesh_files.empty() ? test::read_shared_mesh(stem + ".off", mesh)
+                                     : mesh_io::read_triangle_mesh(path, mesh, std::cerr))) {
+      out << "\n## " << stem << ": cannot read " << path << ", skipped\n";
       continue;
     }
     const auto making = std::chrono::steady_clock::now();
