@@ -177,6 +177,14 @@ std::vector<std::pair<std::string, std::string>> mesh_sources(const Options& opt
   return sources;
 }
 
+// Reads the mesh of a source of mesh_sources(); false if it cannot.
+bool read_source(const Options& options, const std::string& name, const std::string& path,
+                 Mesh& mesh)
+{
+  return options.mesh_files.empty() ? test::read_shared_mesh(name + ".off", mesh)
+                                    : mesh_io::read_triangle_mesh(path, mesh, std::cerr);
+}
+
 // Appends an n x n grid of triangles beyond the bounding box of `mesh` (faces and vertices get
 // the next indices: the regions stay valid).
 void add_far_grid(Mesh& mesh, int n)
@@ -621,8 +629,7 @@ void run_anywhere(std::ostream& out, const Options& options)
       << "|---|---|---|---|---|---|---|---|\n";
   for (const auto& [stem, path] : mesh_sources(options)) {
     Mesh mesh;
-    if (!(options.mesh_files.empty() ? test::read_shared_mesh(stem + ".off", mesh)
-                                     : mesh_io::read_triangle_mesh(path, mesh, std::cerr))) {
+    if (!read_source(options, stem, path, mesh)) {
       out << "| " << stem << " | cannot read " << path << " | | | | | | |\n";
       continue;
     }
@@ -712,8 +719,7 @@ int main(int argc, char** argv)
   std::string most_slivers_case, most_folded_case;
   for (const auto& [stem, path] : mesh_sources(options)) {
     Mesh mesh;
-    if (!(options.mesh_files.empty() ? test::read_shared_mesh(stem + ".off", mesh)
-                                     : mesh_io::read_triangle_mesh(path, mesh, std::cerr))) {
+    if (!read_source(options, stem, path, mesh)) {
       out << "\n## " << stem << ": cannot read " << path << ", skipped\n";
       continue;
     }
