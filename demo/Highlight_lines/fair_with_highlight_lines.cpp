@@ -48,9 +48,10 @@ constexpr std::size_t few_movable_vertices = 10;
 const char* usage =
     "usage: fair_with_highlight_lines [MESH] [options]\n"
     "\n"
-    "Fairs a region of a triangle mesh (OFF, OBJ, PLY or STL; polygon soups are repaired and\n"
-    "polygons triangulated) so that the surface and its highlight lines become smooth: writes\n"
-    "PREFIX.png (before / after, close-up), PREFIX_faired.EXT and, when a dent was added,\n"
+    "Fairs a region of a triangle mesh (OFF, OBJ, PLY or STL; polygon soups are repaired,\n"
+    "polygons triangulated, degenerate triangles removed) so that the surface and its\n"
+    "highlight lines become smooth: writes PREFIX.png (before / after, close-up),\n"
+    "PREFIX_faired.EXT and, when a dent was added,\n"
     "PREFIX_dented.EXT, in the format of MESH (EXT: its extension) or as --format asks.\n"
     "MESH defaults to the bundled VW Beetle body, into whose roof a dent is pressed first.\n"
     "\n"
