@@ -177,12 +177,17 @@ std::vector<std::pair<std::string, std::string>> mesh_sources(const Options& opt
   return sources;
 }
 
-// Reads the mesh of a source of mesh_sources(); false if it cannot.
+// Reads the mesh of a source of mesh_sources(); false if it cannot. The cases need compact
+// indices (the programs' reader keeps the ids of triangulated polygons, leaving removed ones).
 bool read_source(const Options& options, const std::string& name, const std::string& path,
                  Mesh& mesh)
 {
-  return options.mesh_files.empty() ? test::read_shared_mesh(name + ".off", mesh)
-                                    : mesh_io::read_triangle_mesh(path, mesh, std::cerr);
+  if (options.mesh_files.empty())
+    return test::read_shared_mesh(name + ".off", mesh);
+  if (!mesh_io::read_triangle_mesh(path, mesh, std::cerr))
+    return false;
+  mesh.collect_garbage();
+  return true;
 }
 
 // Appends an n x n grid of triangles beyond the bounding box of `mesh` (faces and vertices get
