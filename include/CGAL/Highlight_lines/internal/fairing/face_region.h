@@ -87,6 +87,16 @@ struct Has_surface_mesh_face_indices<Surface_mesh<P>, SM_index_pmap<P, SM_Face_i
 {
 };
 
+// Whether the mesh is a Surface_mesh, whose vertex descriptors are indices.
+template <typename TriangleMesh>
+struct Is_surface_mesh : std::false_type
+{
+};
+template <typename P>
+struct Is_surface_mesh<Surface_mesh<P>> : std::true_type
+{
+};
+
 // The region, after checking that it is a non-empty range of faces of `tm`. A face belongs
 // to `tm` if it is the face of `tm` with its index: one linear pass over the faces (a set of
 // all faces would cost O(F log F) and an allocation per face, for every region), except on a
@@ -145,8 +155,7 @@ neighborhood(const TriangleMesh& tm, const Face_region<TriangleMesh, FaceIndexMa
   // A vertex is shared by about six faces of a front. A Surface_mesh's vertices are indices:
   // each is expanded once (the repeated expansions were 5 % of a small fairing). Other graphs
   // have no index without a pass over the mesh, and expand a vertex from each of its faces.
-  constexpr bool indexed_vertices =
-      Has_surface_mesh_face_indices<TriangleMesh, FaceIndexMap>::value;
+  constexpr bool indexed_vertices = Is_surface_mesh<TriangleMesh>::value;
   Compact_ids expanded(false, 0);
   if constexpr (indexed_vertices)
     expanded.reserve(3 * front.size());
