@@ -7,6 +7,8 @@
 // light tunnel; 1: every level. With TBB, the model and the sweep are also measured with
 // CGAL::Parallel_if_available_tag.
 //
+// BM_compute_highlight_lines_with_creases: the model cut along the creases (crease_edge_map).
+//
 // BM_sweep_segments: a sweep step as a viewer needs it, the segments of the lines without tracing
 // them (Highlight_line_sweeper::compute_segments()), into the arrays of the previous step.
 //
@@ -19,6 +21,7 @@
 #include <CGAL/Highlight_lines/Highlight_line_sweeper.h>
 #include <CGAL/Highlight_lines/default_light_setup.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
@@ -129,6 +132,37 @@ void BM_compute_highlight_lines(benchmark::State& state)
   report(state, total / double(state.iterations()));
 }
 
+// The same model cut along the creases (crease_edge_map; here the edges sharper than 20
+// degrees, found once outside the timing): the cut adds a pass over the vertices' rings.
+void BM_compute_highlight_lines_with_creases(benchmark::State& state)
+{
+  static Mesh mesh = big_mesh();
+  static const auto creases = [] {
+    auto map = mesh.add_property_map<Mesh::Edge_index, bool>("e:bench_crease", false).first;
+    CGAL::Polygon_mesh_processing::detect_sharp_edges(mesh, 20, map);
+    return map;
+  }();
+  std::size_t crease_edges = 0;
+  for (auto e : edges(mesh))
+    crease_edges += creases[e] ? 1 : 0;
+  const auto lights = HL::default_light_setup(mesh);
+  const auto np = HL::parameters::crease_edge_map(
+      HL::parameters::combine(HL::parameters::level_range(levels_of(state, lights)),
+                              HL::parameters::facing_side_only(true)),
+      creases);
+  double total = 0;
+  std::size_t nodes = 0;
+  for (auto _ : state) {
+    const auto start = std::chrono::steady_clock::now();
+    const auto model = CGAL::compute_highlight_lines(mesh, lights, CGAL::Emptyset_iterator(), np);
+    total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    nodes = model.nodes().size();
+  }
+  state.counters["nodes"] = double(nodes);
+  state.counters["crease_edges"] = double(crease_edges);
+  report(state, total / double(state.iterations()));
+}
+
 // A sweep step: lights moved, everything independent of them cached in the sweeper, the model
 // computed into the one of the previous step (Highlight_line_sweeper::compute(lights, model)),
 // as a sweep does; with argument NewModel, into a new model object each time.
@@ -216,6 +250,10 @@ BENCHMARK(BM_viewer_light_change)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_TEMPLATE(BM_compute_highlight_lines, CGAL::Sequential_tag)
     ->Arg(0)
     ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_compute_highlight_lines_with_creases)
+    ->Arg(0)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK_TEMPLATE(BM_sweep_update, CGAL::Sequential_tag)

@@ -8,6 +8,7 @@
 // (CGAL::Highlight_lines::default_light_setup()).
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Highlight_lines/default_light_setup.h>
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/compute_highlight_lines.h>
@@ -57,6 +58,11 @@ const char* usage =
     "  --normal X Y Z          the normal Z of the light plane  } perpendicular to Z\n"
     "  --spacing S             the distance between lights      }\n"
     "  --levels LO HI          only the lights with index in [LO, HI]\n"
+    "  --crease-angle DEG      edges whose faces' normals differ by more than DEG degrees\n"
+    "                          are creases (Polygon_mesh_processing::detect_sharp_edges()):\n"
+    "                          the normals are not averaged across them, so that the lines\n"
+    "                          run straight on the planar faces of a CAD part and end at its\n"
+    "                          creases (default: none, the paper's model)\n"
     "  --view AZIMUTH ELEVATION  viewing direction in degrees around the light-plane normal\n"
     "                          (default 35 30)\n"
     "  --size W H              picture size in pixels (default 1600 1000)\n"
@@ -74,6 +80,7 @@ struct Options
   int lines = 40;
   command_line::Light_options lights;
   std::optional<std::pair<long long, long long>> levels;
+  std::optional<double> crease_angle;
   double azimuth = 35, elevation = 30;
   command_line::Picture_size size{1600, 1000};
 };
@@ -95,6 +102,10 @@ Options parse(int argc, char** argv)
         else if (a == "--levels") {
           const double lo = number(i, argc, argv), hi = number(i, argc, argv);
           o.levels = std::make_pair((long long)lo, (long long)hi);
+        } else if (a == "--crease-angle") {
+          o.crease_angle = number(i, argc, argv);
+          if (!(*o.crease_angle > 0 && *o.crease_angle < 180))
+            fail("--crease-angle: the angle must lie strictly between 0 and 180 degrees");
         } else if (a == "--view") {
           o.azimuth = number(i, argc, argv);
           o.elevation = number(i, argc, argv);
@@ -121,10 +132,27 @@ int main(int argc, char** argv)
   if (!mesh_io::read_input_mesh(options.mesh, mesh, command_line::program()))
     return 1;
 
+  // With --crease-angle, the mesh's creases: every step below computes the model cut along
+  // them (the light setup's spacing too, from the distance values of the cut model).
+  auto creases = mesh.add_property_map<Mesh::Edge_index, bool>("e:highlight_crease", false).first;
+  if (options.crease_angle) {
+    CGAL::Polygon_mesh_processing::detect_sharp_edges(mesh, *options.crease_angle, creases);
+    std::size_t number_of_creases = 0;
+    for (auto e : edges(mesh))
+      number_of_creases += creases[e] ? 1 : 0;
+    std::cout << number_of_creases << " crease edges (normals differ by more than "
+              << *options.crease_angle << " degrees)\n";
+  }
   try {
+    // Runs `compute` with the named parameters `np`, cut along the creases if asked for.
+    auto run = [&](const auto& np, const auto& compute) {
+      return options.crease_angle ? compute(HLP::crease_edge_map(np, creases)) : compute(np);
+    };
     const HL::Light_setup<K> lights =
         options.lights.given() ? options.lights.setup<K>()
-                               : HL::default_light_setup(mesh, HLP::number_of_lines(options.lines));
+                               : run(HLP::number_of_lines(options.lines), [&](const auto& np) {
+                                   return HL::default_light_setup(mesh, np);
+                                 });
     std::cout << "lights: base " << lights.base_point() << ", direction "
               << lights.light_direction() << ", plane normal " << lights.plane_normal()
               << ", spacing " << lights.spacing() << "\n";
@@ -132,12 +160,16 @@ int main(int argc, char** argv)
     // By default, the lights over the central part of the surface, imaged on the side of
     // the surface that faces them (as a light tunnel shows them).
     const std::pair<long long, long long> levels =
-        options.levels ? *options.levels : HL::default_level_range(mesh, lights);
+        options.levels
+            ? *options.levels
+            : run(CGAL::parameters::vertex_point_map(mesh.points()),
+                  [&](const auto& np) { return HL::default_level_range(mesh, lights, np); });
     std::cout << "light indices " << levels.first << " to " << levels.second << "\n";
     std::vector<std::vector<K::Point_3>> polylines;
-    const auto model = CGAL::compute_highlight_lines(
-        mesh, lights, std::back_inserter(polylines),
-        HLP::combine(HLP::level_range(levels), HLP::facing_side_only(true)));
+    const auto model = run(
+        HLP::combine(HLP::level_range(levels), HLP::facing_side_only(true)), [&](const auto& np) {
+          return CGAL::compute_highlight_lines(mesh, lights, std::back_inserter(polylines), np);
+        });
     std::cout << model.lines().size() << " highlight lines through " << model.nodes().size()
               << " nodes";
     if (model.number_of_skipped_edges() > 0)
@@ -165,7 +197,10 @@ int main(int argc, char** argv)
     // The picture: the mesh seen from above the light plane's side, lines drawn over it.
     std::vector<highlight_picture::Point3> points;
     std::vector<std::array<std::size_t, 3>> triangles;
-    mesh_picture::mesh_arrays(mesh, points, triangles);
+    if (options.crease_angle)
+      mesh_picture::mesh_arrays(mesh, creases, points, triangles);
+    else
+      mesh_picture::mesh_arrays(mesh, points, triangles);
     // Azimuth around the light plane normal Z, measured from the light direction H.
     const auto z = to_array(lights.plane_normal()), h = to_array(lights.light_direction());
     const auto w = highlight_picture::detail::cross(z, h);

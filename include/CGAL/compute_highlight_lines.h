@@ -78,6 +78,11 @@ the same order).
       \cgalParamType{a class model of `ConstRange` with `boost::graph_traits<TriangleMesh>::%face_descriptor` as value type}
       \cgalParamDefault{all faces of `tm`}
     \cgalParamNEnd
+    \cgalParamNBegin{Highlight_lines::parameters::crease_edge_map}
+      \cgalParamDescription{a property map whose value is `true` on the crease edges of `tm` (e.g. filled by `Polygon_mesh_processing::detect_sharp_edges()`): the model is computed on the mesh cut along them, with one normal per sector of faces between crease edges at a vertex, so that the lines run straight on the planar faces of a CAD part and end at its creases (see \ref hl_creases)}
+      \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor` as key type and `bool` as value type}
+      \cgalParamDefault{no crease: the normals of eq. 3 over the whole one-ring, as in the paper}
+    \cgalParamNEnd
     \cgalParamNBegin{Highlight_lines::parameters::level_range}
       \cgalParamDescription{a pair `(lo, hi)`: only the lights with index `m` in `[lo, hi]` get highlight lines}
       \cgalParamType{`std::pair<int, int>` (or a pair of other integer types)}

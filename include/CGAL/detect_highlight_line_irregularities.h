@@ -340,6 +340,12 @@ OutputIterator detect_highlight_line_irregularities(
   typedef HL::Highlight_line_sweeper<TriangleMesh, Vertex_point_map, GeomTraits, ConcurrencyTag>
       Sweeper;
 
+  // The detection finds creases itself (sharp edges break its lines and bound its regions),
+  // and its tables are per mesh vertex: a mesh cut along creases would give a vertex several.
+  static_assert(CGAL::parameters::is_default_parameter<NamedParameters,
+                                                       HL::internal_np::crease_edge_map_t>::value,
+                "detect_highlight_line_irregularities() does not take crease_edge_map: it "
+                "treats edges sharper than 60 degrees as creases itself");
   const HL::internal::Detection_options options(np);
   const Sweeper sweeper(tm, np); // checks the mesh
   const auto vim = get_initialized_vertex_index_map(tm, np);

@@ -15,6 +15,7 @@
 // abort: any other exception from the package, a sanitizer report, a non-finite node or point,
 // a mesh changed by a call that threw, a vertex moved that is not movable, a flipped triangle.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
@@ -29,6 +30,8 @@
 #include <CGAL/Highlight_lines/fairing_building_blocks.h>
 #include <CGAL/compute_highlight_lines.h>
 #include <CGAL/fair_with_highlight_lines.h>
+
+#include <boost/property_map/property_map.hpp>
 
 #include <cmath>
 #include <cstdint>
@@ -245,8 +248,10 @@ std::vector<Face> region_around(const Mesh& mesh, Vertex v, int rings)
   return std::vector<Face>(region.begin(), region.end());
 }
 
-void check_model(const Mesh& mesh, const HL::Light_setup<K>& lights)
+// Returns whether the model was computed (the mesh passed its checks).
+bool check_model(const Mesh& mesh, const HL::Light_setup<K>& lights)
 {
+  bool computed = false;
   const std::vector<double> before = coordinates(mesh);
   std::vector<std::vector<Point>> polylines;
   try {
@@ -263,11 +268,41 @@ void check_model(const Mesh& mesh, const HL::Light_setup<K>& lights)
         if (!finite(p))
           bug("non-finite polyline point");
     count(model.lines().empty() ? "model: no line" : "model: lines");
+    computed = true;
   } catch (const HL::Invalid_input&) {
     count("model: Invalid_input");
   }
   if (!same_bits(before, coordinates(mesh)))
     bug("compute_highlight_lines changed the mesh");
+  return computed;
+}
+
+// The model cut along the creases sharper than `angle` degrees: the same guarantees.
+void check_model_with_creases(const Mesh& mesh, const HL::Light_setup<K>& lights, double angle)
+{
+  const std::vector<double> before = coordinates(mesh);
+  std::map<Mesh::Edge_index, bool> sharp;
+  boost::associative_property_map<std::map<Mesh::Edge_index, bool>> creases(sharp);
+  for (auto e : edges(mesh))
+    put(creases, e, false);
+  try {
+    CGAL::Polygon_mesh_processing::detect_sharp_edges(mesh, angle, creases);
+    std::vector<std::vector<Point>> polylines;
+    const auto model = CGAL::compute_highlight_lines(mesh, lights, std::back_inserter(polylines),
+                                                     HL::parameters::crease_edge_map(creases));
+    for (const auto& node : model.nodes())
+      if (!finite(node.point))
+        bug("non-finite highlight node (creases)");
+    for (const auto& line : model.lines())
+      for (std::size_t id : line.nodes)
+        if (id >= model.nodes().size())
+          bug("line refers to a node that does not exist (creases)");
+    count(model.lines().empty() ? "creases: no line" : "creases: lines");
+  } catch (const HL::Invalid_input&) {
+    count("creases: Invalid_input");
+  }
+  if (!same_bits(before, coordinates(mesh)))
+    bug("compute_highlight_lines with creases changed the mesh");
 }
 
 void check_fairing(Mesh& mesh, const HL::Light_setup<K>& lights, const Parameters& p)
@@ -339,7 +374,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     count("lights: Invalid_input");
     return 0;
   }
-  check_model(mesh, *lights);
+  // The creases only on meshes the model accepts: detect_sharp_edges() needs face normals.
+  if (check_model(mesh, *lights))
+    check_model_with_creases(mesh, *lights, 10.0 + double(std::llabs(p.light / 4) % 16) * 10.0);
   check_fairing(mesh, *lights, p);
   return 0;
 }

@@ -38,6 +38,53 @@ void mesh_arrays(const CGAL::Surface_mesh<Point>& mesh,
   }
 }
 
+// The same, with the mesh cut along the edges e with get(creases, e): a vertex gets one point
+// per sector of faces between crease edges, so that smooth shading does not round the creases.
+template <typename Point, typename CreaseMap>
+void mesh_arrays(const CGAL::Surface_mesh<Point>& mesh, CreaseMap creases,
+                 std::vector<highlight_picture::Point3>& points,
+                 std::vector<std::array<std::size_t, 3>>& triangles)
+{
+  typedef CGAL::Surface_mesh<Point> Mesh;
+  mesh_arrays(mesh, points, triangles);
+  // Per halfedge h: the point of target(h) in the face of h.
+  std::vector<std::size_t> corner_point(mesh.number_of_halfedges(), 0);
+  for (auto v : vertices(mesh)) {
+    std::vector<typename Mesh::Halfedge_index> ring;
+    for (auto h : CGAL::halfedges_around_target(mesh.halfedge(v), mesh))
+      ring.push_back(h);
+    // Start after a crease or a border, so that a sector is never split by the wrap-around.
+    std::size_t start = 0;
+    for (std::size_t i = 0; i < ring.size(); ++i)
+      if (mesh.is_border(ring[i]) || get(creases, mesh.edge(mesh.next(ring[i])))) {
+        start = (i + 1) % ring.size();
+        break;
+      }
+    std::size_t point = std::size_t(v);
+    bool used = false;
+    for (std::size_t k = 0; k < ring.size(); ++k) {
+      const auto h = ring[(start + k) % ring.size()];
+      if (mesh.is_border(h))
+        continue;
+      corner_point[std::size_t(h)] = point;
+      used = true;
+      if (get(creases, mesh.edge(mesh.next(h))) && used && k + 1 < ring.size()) {
+        points.push_back(points[std::size_t(v)]);
+        point = points.size() - 1;
+        used = false;
+      }
+    }
+  }
+  triangles.clear();
+  for (auto f : faces(mesh)) {
+    std::array<std::size_t, 3> t{};
+    std::size_t j = 0;
+    for (auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh))
+      t[j++] = corner_point[std::size_t(mesh.prev(h))];
+    triangles.push_back(t);
+  }
+}
+
 template <typename Point>
 std::vector<std::vector<highlight_picture::Point3>>
 polyline_arrays(const std::vector<std::vector<Point>>& polylines)

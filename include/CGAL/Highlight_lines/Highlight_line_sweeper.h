@@ -120,6 +120,8 @@ public:
     - `CGAL::parameters::vertex_point_map(vpm)` (default: the internal point map).
     - `CGAL::parameters::vertex_index_map`, `face_index_map`, `halfedge_index_map` (default:
       internal index maps, or dynamic ones initialised here).
+    - `Highlight_lines::parameters::crease_edge_map(creases)` (default: none): the models are
+      computed on the mesh cut along the edges marked `true` (see \ref hl_creases).
 
   \throws Invalid_input if a face involved is not a triangle or is degenerate, or a vertex has
   a non-finite coordinate.

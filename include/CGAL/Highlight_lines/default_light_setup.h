@@ -34,7 +34,9 @@ the vertices facing the plane.
 \param tm the mesh
 \param np an optional sequence of named parameters among `vertex_point_map`,
 `Highlight_lines::parameters::face_range` (the bounding box and the distance values are
-taken on these faces only) and `Highlight_lines::parameters::number_of_lines` (default 20).
+taken on these faces only), `Highlight_lines::parameters::crease_edge_map` (the distance values
+of the model cut along the creases, see \ref hl_creases) and
+`Highlight_lines::parameters::number_of_lines` (default 20).
 
 \throws Invalid_input if the mesh (range) is empty or flat in a way that leaves no spread
 of distance values, or for the input problems listed at `compute_highlight_lines()`.
@@ -126,8 +128,8 @@ as a light tunnel with a finite number of tubes would.
 
 \param tm the mesh
 \param lights the light setup
-\param np an optional sequence of named parameters among `vertex_point_map` and
-`Highlight_lines::parameters::face_range`.
+\param np an optional sequence of named parameters among `vertex_point_map`,
+`Highlight_lines::parameters::face_range` and `Highlight_lines::parameters::crease_edge_map`.
 
 \throws Invalid_input if no vertex faces the light plane.
 */

@@ -39,6 +39,7 @@ enum fairing_margin_t { fairing_margin };
 enum all_sides_t { all_sides };
 enum local_residual_t { local_residual };
 enum number_of_scales_t { number_of_scales };
+enum crease_edge_map_t { crease_edge_map };
 // Internal, for the detection's sweeps: an edge over max_levels_per_edge is dropped with its
 // faces (the rule before the facing window, see internal::Level_window).
 enum drop_faces_over_cap_t { drop_faces_over_cap };
@@ -113,6 +114,7 @@ CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(fairing_margin_t, fairing_margin)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(all_sides_t, all_sides)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(local_residual_t, local_residual)
 CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(number_of_scales_t, number_of_scales)
+CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER(crease_edge_map_t, crease_edge_map)
 
 #undef CGAL_HIGHLIGHT_LINES_NAMED_PARAMETER
 

@@ -66,13 +66,23 @@ struct Local_mesh
   Compact_ids face_ids;
   std::function<std::size_t(face_descriptor)> face_index;
 
+  // A mesh cut along creases (crease_cut.h): the faces of each model vertex's sector, at
+  // [sector_face_begin[v], sector_face_begin[v + 1]); empty otherwise.
+  std::vector<int> sector_face_begin, sector_faces;
+
   const double* point(int v) const { return &xyz[3 * std::size_t(v)]; }
 
   // Calls f(local face id) for every face incident to model vertex v (rarely used: exact
-  // fallbacks only).
+  // fallbacks only); on a cut mesh, for the faces of its sector.
   template <typename F>
   void for_each_face_around(int v, F&& f) const
   {
+    if (!sector_face_begin.empty()) {
+      for (int i = sector_face_begin[std::size_t(v)]; i < sector_face_begin[std::size_t(v) + 1];
+           ++i)
+        f(sector_faces[std::size_t(i)]);
+      return;
+    }
     for (halfedge_descriptor h :
          halfedges_around_target(halfedge(vertex_handles[std::size_t(v)], *mesh), *mesh)) {
       const face_descriptor fd = face(h, *mesh);

@@ -6,6 +6,7 @@
 
 #include <CGAL/Highlight_lines/Invalid_input.h>
 #include <CGAL/Highlight_lines/internal/Local_mesh.h>
+#include <CGAL/Highlight_lines/internal/crease_cut.h>
 #include <CGAL/Highlight_lines/internal/model/highlight_nodes.h>
 #include <CGAL/Highlight_lines/internal/model/level_classification.h>
 #include <CGAL/Highlight_lines/internal/model/line_tracing.h>
@@ -68,11 +69,13 @@ class Model_engine
   static constexpr bool is_parallel = Is_parallel<ConcurrencyTag>::value;
 
 public:
-  // `np`: face_range (default: all faces) and the index maps. Throws Invalid_input on a face
-  // that is not a triangle or is degenerate, or on a non-finite coordinate.
+  // `np`: face_range (default: all faces), crease_edge_map (default: none) and the index maps.
+  // Throws Invalid_input on a face that is not a triangle or is degenerate, or on a non-finite
+  // coordinate.
   template <typename NamedParameters>
   Model_engine(const TriangleMesh& tm, VertexPointMap vpm, const NamedParameters& np) : vpm_(vpm)
   {
+    using CGAL::parameters::get_parameter;
     using CGAL::parameters::get_parameter_reference;
     using CGAL::parameters::is_default_parameter;
     auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
@@ -85,6 +88,8 @@ public:
     else
       build_local_mesh(tm, get_parameter_reference(np, internal_np::face_range), false, vpm_, vim,
                        fim, him, mesh_);
+    if constexpr (!is_default_parameter<NamedParameters, internal_np::crease_edge_map_t>::value)
+      cut_at_creases(tm, get_parameter(np, internal_np::crease_edge_map), mesh_);
     compute_normals();
     compute_owned_edges(mesh_, owned_edges_);
   }
