@@ -23,54 +23,6 @@ namespace HL = CGAL::Highlight_lines;
 namespace HLP = CGAL::Highlight_lines::parameters;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-// The unit box, each side an n x n grid whose inner vertices are jittered within the side's
-// plane by up to jitter / n (an irregular CAD tessellation; below 0.25 no triangle folds);
-// sides share their border vertices.
-Soup jittered_box(int n, double jitter, unsigned seed)
-{
-  Soup soup;
-  std::map<std::array<double, 3>, std::size_t> index_of;
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(-jitter / n, jitter / n);
-  auto vertex = [&](const std::array<double, 3>& p) {
-    const auto found = index_of.emplace(p, soup.points.size());
-    if (found.second)
-      soup.points.emplace_back(p[0], p[1], p[2]);
-    return found.first->second;
-  };
-  for (int axis = 0; axis < 3; ++axis)
-    for (double side : {0.0, 1.0}) {
-      const int a = (axis + 1) % 3, b = (axis + 2) % 3;
-      std::vector<std::size_t> ids;
-      for (int j = 0; j <= n; ++j)
-        for (int i = 0; i <= n; ++i) {
-          std::array<double, 3> p{};
-          p[std::size_t(axis)] = side;
-          const bool inner = i > 0 && i < n && j > 0 && j < n;
-          p[std::size_t(a)] = double(i) / n + (inner ? u(rng) : 0.0);
-          p[std::size_t(b)] = double(j) / n + (inner ? u(rng) : 0.0);
-          ids.push_back(vertex(p));
-        }
-      auto id = [&](int i, int j) { return ids[std::size_t(j * (n + 1) + i)]; };
-      for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-          std::array<std::array<std::size_t, 3>, 2> triangles = {
-              {{id(i, j), id(i + 1, j), id(i + 1, j + 1)},
-               {id(i, j), id(i + 1, j + 1), id(i, j + 1)}}};
-          for (auto t : triangles) {
-            // Outward: the normal along +axis on the side 1, -axis on the side 0.
-            const Vector normal = CGAL::cross_product(soup.points[t[1]] - soup.points[t[0]],
-                                                      soup.points[t[2]] - soup.points[t[0]]);
-            const double along = axis == 0 ? normal.x() : axis == 1 ? normal.y() : normal.z();
-            if ((along > 0) != (side > 0.5))
-              std::swap(t[1], t[2]);
-            soup.triangles.push_back(t);
-          }
-        }
-    }
-  return soup;
-}
-
 // Lights whose plane faces three sides of the box obliquely.
 Lights oblique_lights()
 {

@@ -8,8 +8,14 @@
 
 #include <CGAL/boost/graph/graph_traits_TriMesh_ArrayKernelT.h>
 #include <CGAL/boost/graph/properties_TriMesh_ArrayKernelT.h>
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/compute_highlight_lines.h>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
+#include <map>
 
 #include <gtest/gtest.h>
 
@@ -54,6 +60,59 @@ TEST(Invariance, OpenMeshAndSurfaceMeshAgree)
     EXPECT_NEAR(a.nodes()[i].point.y(), CGAL::to_double(b.nodes()[i].point.y()), 1e-12);
     EXPECT_NEAR(a.nodes()[i].point.z(), CGAL::to_double(b.nodes()[i].point.z()), 1e-12);
     EXPECT_EQ(a.nodes()[i].degree, b.nodes()[i].degree);
+  }
+}
+
+// The model cut along the creases (crease_edge_map, a map keyed by OpenMesh's edges) gives
+// the lines of Surface_mesh.
+TEST(Invariance, OpenMeshAndSurfaceMeshAgreeWithCreases)
+{
+  const Soup soup = jittered_box(8, 0.2, 13);
+  const Surface_mesh sm = to_mesh<Surface_mesh>(soup);
+  Open_mesh om;
+  std::vector<Open_mesh::VertexHandle> handles;
+  for (const Point& p : soup.points)
+    handles.push_back(om.add_vertex(Open_mesh::Point(p.x(), p.y(), p.z())));
+  for (const auto& t : soup.triangles)
+    om.add_face(handles[t[0]], handles[t[1]], handles[t[2]]);
+  std::map<Surface_mesh::Edge_index, bool> sharp_sm;
+  std::map<boost::graph_traits<Open_mesh>::edge_descriptor, bool> sharp_om;
+  boost::associative_property_map<decltype(sharp_sm)> creases_sm(sharp_sm);
+  boost::associative_property_map<decltype(sharp_om)> creases_om(sharp_om);
+  CGAL::Polygon_mesh_processing::detect_sharp_edges(sm, 60, creases_sm);
+  CGAL::Polygon_mesh_processing::detect_sharp_edges(om, 60, creases_om);
+  const Lights lights(Point(0.5, 0.5, 4), Vector(2, -1, 0), Vector(1, 2, 3), 0.05);
+  std::vector<std::vector<Point>> a;
+  CGAL::compute_highlight_lines(sm, lights, std::back_inserter(a),
+                                CGAL::Highlight_lines::parameters::crease_edge_map(creases_sm));
+  const auto b =
+      CGAL::compute_highlight_lines(om, lights, CGAL::Emptyset_iterator(),
+                                    CGAL::Highlight_lines::parameters::crease_edge_map(creases_om));
+  ASSERT_GT(a.size(), 20u);
+  ASSERT_EQ(a.size(), b.lines().size());
+  std::vector<std::vector<std::array<double, 3>>> la, lb;
+  for (const auto& line : a) {
+    la.emplace_back();
+    for (const Point& p : line)
+      la.back().push_back({p.x(), p.y(), p.z()});
+  }
+  for (const auto& line : b.lines()) {
+    lb.emplace_back();
+    for (std::size_t n : line.nodes) {
+      const auto& p = b.nodes()[n].point;
+      lb.back().push_back({CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
+    }
+    if (line.is_closed)
+      lb.back().push_back(lb.back().front());
+  }
+  std::sort(la.begin(), la.end());
+  std::sort(lb.begin(), lb.end());
+  ASSERT_EQ(la.size(), lb.size());
+  for (std::size_t i = 0; i < la.size(); ++i) {
+    ASSERT_EQ(la[i].size(), lb[i].size());
+    for (std::size_t j = 0; j < la[i].size(); ++j)
+      for (int k = 0; k < 3; ++k)
+        EXPECT_NEAR(la[i][j][std::size_t(k)], lb[i][j][std::size_t(k)], 1e-12);
   }
 }
 
