@@ -62,7 +62,9 @@ const char* usage =
     "                          are creases (Polygon_mesh_processing::detect_sharp_edges()):\n"
     "                          the normals are not averaged across them, so that the lines\n"
     "                          run straight on the planar faces of a CAD part and end at its\n"
-    "                          creases (default: none, the paper's model)\n"
+    "                          creases (default: none, the paper's model); --mesh-out's\n"
+    "                          highlight_distance stays the paper's field (one value per\n"
+    "                          vertex)\n"
     "  --view AZIMUTH ELEVATION  viewing direction in degrees around the light-plane normal\n"
     "                          (default 35 30)\n"
     "  --size W H              picture size in pixels (default 1600 1000)\n"
@@ -227,8 +229,12 @@ int main(int argc, char** argv)
         return 1;
       }
       std::cout << "wrote " << options.mesh_out
-                << (ply ? " (vertex properties highlight_distance and highlight_level: the lines "
-                          "are their contours at m*s and m)"
+                << (ply ? (options.crease_angle
+                               ? " (vertex properties highlight_distance and highlight_level of "
+                                 "the paper's model, without the cut at the creases: one value "
+                                 "per vertex)"
+                               : " (vertex properties highlight_distance and highlight_level: "
+                                 "the lines are their contours at m*s and m)")
                         : "")
                 << "\n";
     }

@@ -158,7 +158,8 @@ public:
   /// beyond the lights imaged where the surface faces the light plane.
   std::size_t number_of_trimmed_nodes() const { return trimmed_nodes_; }
   /// Number of vertices whose normal is parallel to the light plane (`Z·N = 0`): their
-  /// highlight distance is undefined, no node is placed on their edges.
+  /// highlight distance is undefined, no node is placed on their edges. With
+  /// `Highlight_lines::parameters::crease_edge_map`, a vertex counts once per sector.
   std::size_t number_of_undefined_vertices() const { return undefined_vertices_; }
   /// Number of vertices whose normal is so close to parallel to the light plane that
   /// `|d/s| >= 2^50`; they are treated like undefined ones.

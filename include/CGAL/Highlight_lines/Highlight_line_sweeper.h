@@ -334,7 +334,8 @@ public:
 
   /// Number of faces the model is computed on.
   std::size_t number_of_faces() const { return engine_.local_mesh().number_of_model_faces; }
-  /// Number of vertices of those faces.
+  /// Number of vertices of those faces; with `crease_edge_map`, a vertex counts once per
+  /// sector of its faces between crease edges.
   std::size_t number_of_vertices() const { return engine_.local_mesh().number_of_model_vertices; }
 
   /// \cond SKIP_IN_MANUAL

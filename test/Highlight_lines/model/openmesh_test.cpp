@@ -8,6 +8,7 @@
 
 #include <CGAL/boost/graph/graph_traits_TriMesh_ArrayKernelT.h>
 #include <CGAL/boost/graph/properties_TriMesh_ArrayKernelT.h>
+#include <CGAL/Highlight_lines/Highlight_line_sweeper.h>
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/compute_highlight_lines.h>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
@@ -28,6 +29,46 @@ struct Double_traits : public OpenMesh::DefaultTraits
 };
 typedef OpenMesh::TriMesh_ArrayKernelT<Double_traits> Open_mesh;
 
+// Built with OpenMesh's own API: CGAL 5.5's point map for OpenMesh writes through float.
+Open_mesh open_mesh(const Soup& soup)
+{
+  Open_mesh om;
+  std::vector<Open_mesh::VertexHandle> handles;
+  for (const Point& p : soup.points)
+    handles.push_back(om.add_vertex(Open_mesh::Point(p.x(), p.y(), p.z())));
+  for (const auto& t : soup.triangles)
+    om.add_face(handles[t[0]], handles[t[1]], handles[t[2]]);
+  return om;
+}
+
+// A soup as Surface_mesh and as OpenMesh, each with its edges sharper than 60 degrees.
+struct Meshes_with_creases
+{
+  typedef std::map<Surface_mesh::Edge_index, bool> Sharp_sm;
+  typedef std::map<boost::graph_traits<Open_mesh>::edge_descriptor, bool> Sharp_om;
+
+  Surface_mesh sm;
+  Open_mesh om;
+  Sharp_sm sharp_sm;
+  Sharp_om sharp_om;
+
+  boost::associative_property_map<Sharp_sm> creases_sm()
+  {
+    return boost::associative_property_map<Sharp_sm>(sharp_sm);
+  }
+  boost::associative_property_map<Sharp_om> creases_om()
+  {
+    return boost::associative_property_map<Sharp_om>(sharp_om);
+  }
+
+  explicit Meshes_with_creases(const Soup& soup)
+      : sm(to_mesh<Surface_mesh>(soup)), om(open_mesh(soup))
+  {
+    CGAL::Polygon_mesh_processing::detect_sharp_edges(sm, 60, creases_sm());
+    CGAL::Polygon_mesh_processing::detect_sharp_edges(om, 60, creases_om());
+  }
+};
+
 TEST(Invariance, OpenMeshAndSurfaceMeshAgree)
 {
   const Soup soup = grid(
@@ -37,13 +78,7 @@ TEST(Invariance, OpenMeshAndSurfaceMeshAgree)
       },
       0.3, 9);
   const Surface_mesh sm = to_mesh<Surface_mesh>(soup);
-  // Built with OpenMesh's own API: CGAL 5.5's point map for OpenMesh writes through float.
-  Open_mesh om;
-  std::vector<Open_mesh::VertexHandle> handles;
-  for (const Point& p : soup.points)
-    handles.push_back(om.add_vertex(Open_mesh::Point(p.x(), p.y(), p.z())));
-  for (const auto& t : soup.triangles)
-    om.add_face(handles[t[0]], handles[t[1]], handles[t[2]]);
+  const Open_mesh om = open_mesh(soup);
   const Lights lights(Point(0.3, -0.2, 4), Vector(0.6, 0.8, 0), Vector(0, 0, 1), 0.12);
   const auto a = CGAL::compute_highlight_lines(sm, lights, CGAL::Emptyset_iterator());
   const auto b = CGAL::compute_highlight_lines(om, lights, CGAL::Emptyset_iterator());
@@ -68,19 +103,11 @@ TEST(Invariance, OpenMeshAndSurfaceMeshAgree)
 TEST(Invariance, OpenMeshAndSurfaceMeshAgreeWithCreases)
 {
   const Soup soup = jittered_box(8, 0.2, 13);
-  const Surface_mesh sm = to_mesh<Surface_mesh>(soup);
-  Open_mesh om;
-  std::vector<Open_mesh::VertexHandle> handles;
-  for (const Point& p : soup.points)
-    handles.push_back(om.add_vertex(Open_mesh::Point(p.x(), p.y(), p.z())));
-  for (const auto& t : soup.triangles)
-    om.add_face(handles[t[0]], handles[t[1]], handles[t[2]]);
-  std::map<Surface_mesh::Edge_index, bool> sharp_sm;
-  std::map<boost::graph_traits<Open_mesh>::edge_descriptor, bool> sharp_om;
-  boost::associative_property_map<decltype(sharp_sm)> creases_sm(sharp_sm);
-  boost::associative_property_map<decltype(sharp_om)> creases_om(sharp_om);
-  CGAL::Polygon_mesh_processing::detect_sharp_edges(sm, 60, creases_sm);
-  CGAL::Polygon_mesh_processing::detect_sharp_edges(om, 60, creases_om);
+  Meshes_with_creases meshes(soup);
+  const Surface_mesh& sm = meshes.sm;
+  const Open_mesh& om = meshes.om;
+  const auto creases_sm = meshes.creases_sm();
+  const auto creases_om = meshes.creases_om();
   const Lights lights(Point(0.5, 0.5, 4), Vector(2, -1, 0), Vector(1, 2, 3), 0.05);
   std::vector<std::vector<Point>> a;
   CGAL::compute_highlight_lines(sm, lights, std::back_inserter(a),
@@ -114,6 +141,41 @@ TEST(Invariance, OpenMeshAndSurfaceMeshAgreeWithCreases)
       for (int k = 0; k < 3; ++k)
         EXPECT_NEAR(la[i][j][std::size_t(k)], lb[i][j][std::size_t(k)], 1e-12);
   }
+}
+
+// An open box: detect_sharp_edges() marks its border edges too, and OpenMesh's halfedge(v)
+// puts the border halfedge last around a border vertex. The cut gives a vertex one local copy
+// per sector with faces only (no copy without faces, whose distance value would be undefined):
+// the same counts and lines as Surface_mesh, whose border halfedge comes first.
+TEST(Invariance, OpenMeshAndSurfaceMeshAgreeWithCreasesOnAnOpenMesh)
+{
+  const Soup soup = jittered_box(8, 0.2, 17, true);
+  Meshes_with_creases meshes(soup);
+  const Surface_mesh& sm = meshes.sm;
+  const Open_mesh& om = meshes.om;
+  const auto creases_sm = meshes.creases_sm();
+  const auto creases_om = meshes.creases_om();
+  const Lights lights(Point(0.5, 0.5, 4), Vector(2, -1, 0), Vector(1, 2, 3), 0.05);
+  namespace HLP = CGAL::Highlight_lines::parameters;
+  const auto a = CGAL::compute_highlight_lines(sm, lights, CGAL::Emptyset_iterator(),
+                                               HLP::crease_edge_map(creases_sm));
+  const auto b = CGAL::compute_highlight_lines(om, lights, CGAL::Emptyset_iterator(),
+                                               HLP::crease_edge_map(creases_om));
+  // Sectors: the 4 bottom corners have 3, the 7 inner vertices of the 8 box edges left 2, the
+  // 4 rim corners 2 (two walls), the other rim vertices 1.
+  const std::size_t copies = num_vertices(sm) + 4 * 2 + 8 * 7 + 4 * 1;
+  EXPECT_EQ(CGAL::Highlight_lines::Highlight_line_sweeper<Surface_mesh>(
+                sm, HLP::crease_edge_map(creases_sm))
+                .number_of_vertices(),
+            copies);
+  EXPECT_EQ(
+      CGAL::Highlight_lines::Highlight_line_sweeper<Open_mesh>(om, HLP::crease_edge_map(creases_om))
+          .number_of_vertices(),
+      copies);
+  EXPECT_EQ(a.number_of_undefined_vertices(), b.number_of_undefined_vertices());
+  ASSERT_GT(a.lines().size(), 10u);
+  ASSERT_EQ(a.lines().size(), b.lines().size());
+  ASSERT_EQ(a.nodes().size(), b.nodes().size());
 }
 
 } // namespace

@@ -107,11 +107,10 @@ inline Soup cylinder_patch(double r, double half_angle, double length, int aroun
   return soup;
 }
 
-// Unit-radius-r sphere by subdividing an octahedron `levels` times, projected.
 // The unit box, each side an n x n grid whose inner vertices are jittered within the side's
 // plane by up to jitter / n (an irregular CAD tessellation; below 0.25 no triangle folds);
-// sides share their border vertices.
-inline Soup jittered_box(int n, double jitter, unsigned seed)
+// sides share their border vertices. `open`: without its side z = 1 (a mesh with a border).
+inline Soup jittered_box(int n, double jitter, unsigned seed, bool open = false)
 {
   Soup soup;
   std::map<std::array<double, 3>, std::size_t> index_of;
@@ -125,6 +124,8 @@ inline Soup jittered_box(int n, double jitter, unsigned seed)
   };
   for (int axis = 0; axis < 3; ++axis)
     for (double side : {0.0, 1.0}) {
+      if (open && axis == 2 && side == 1.0)
+        continue;
       const int a = (axis + 1) % 3, b = (axis + 2) % 3;
       std::vector<std::size_t> ids;
       for (int j = 0; j <= n; ++j)
@@ -156,6 +157,7 @@ inline Soup jittered_box(int n, double jitter, unsigned seed)
   return soup;
 }
 
+// Unit-radius-r sphere by subdividing an octahedron `levels` times, projected.
 inline Soup sphere(double r, int levels)
 {
   Soup soup;

@@ -100,6 +100,17 @@ inline bool lexicographically_smaller(const double* p, const double* q)
   return false;
 }
 
+// Whether the edge from local vertex a to b runs against its canonical direction: edges run
+// from the lexicographically smaller point (ties: the smaller vertex index), so that node
+// positions do not depend on which face saw an edge first.
+template <typename TriangleMesh>
+bool against_canonical_direction(const Local_mesh<TriangleMesh>& lm, int a, int b)
+{
+  return lexicographically_smaller(lm.point(b), lm.point(a)) ||
+         (!lexicographically_smaller(lm.point(a), lm.point(b)) &&
+          lm.vertex_indices[std::size_t(b)] < lm.vertex_indices[std::size_t(a)]);
+}
+
 inline std::string describe_point(const double* p)
 {
   std::ostringstream s;
@@ -172,11 +183,7 @@ void build_whole_local_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIn
     if (halfedge_edge[h_key] >= 0)
       return halfedge_edge[h_key];
     const std::size_t o_key = std::size_t(get(him, opposite(h, tm)));
-    // Canonical direction, from the lexicographically smaller point, so that node positions
-    // do not depend on which face saw an edge first.
-    if (lexicographically_smaller(lm.point(b), lm.point(a)) ||
-        (!lexicographically_smaller(lm.point(a), lm.point(b)) &&
-         lm.vertex_indices[std::size_t(b)] < lm.vertex_indices[std::size_t(a)])) {
+    if (against_canonical_direction(lm, a, b)) {
       std::swap(a, b);
       h = opposite(h, tm);
     }
@@ -285,9 +292,7 @@ void build_local_mesh(const TriangleMesh& tm, const FaceRange& faces, bool whole
       // do not depend on which face saw an edge first.
       int a = vertex_ids.find(get(vim, source(h, tm))),
           b = vertex_ids.find(get(vim, target(h, tm)));
-      if (lexicographically_smaller(lm.point(b), lm.point(a)) ||
-          (!lexicographically_smaller(lm.point(a), lm.point(b)) &&
-           lm.vertex_indices[std::size_t(b)] < lm.vertex_indices[std::size_t(a)])) {
+      if (against_canonical_direction(lm, a, b)) {
         std::swap(a, b);
         h = opposite(h, tm);
       }

@@ -72,7 +72,7 @@ void cut_at_creases(const TriangleMesh& tm, CreaseMap creases, Local_mesh<Triang
       if (boundary_before(i))
         start = i;
     if (start == n)
-      continue; // one crease edge only: the faces around still form one sector
+      continue; // not reached: a crease edge is a boundary
     int sector = 0;
     bool sector_used = false;
     for (std::size_t k = 0; k < n; ++k) {
@@ -89,8 +89,11 @@ void cut_at_creases(const TriangleMesh& tm, CreaseMap creases, Local_mesh<Triang
         if (lm.face_vertices[std::size_t(f)][std::size_t(c)] == int(v))
           corner_sector[3 * std::size_t(f) + std::size_t(c)] = sector;
     }
-    sectors[v] = sector + 1;
-    any_cut = any_cut || sector > 0;
+    // A boundary passed last (a border halfedge at the end of the ring, as OpenMesh's
+    // halfedge(v) gives it) opens no sector: only sectors with faces count. A vertex where a
+    // single crease edge ends keeps one sector.
+    sectors[v] = sector + (sector_used ? 1 : 0);
+    any_cut = any_cut || sectors[v] > 1;
   }
   if (!any_cut)
     return;
@@ -137,9 +140,7 @@ void cut_at_creases(const TriangleMesh& tm, CreaseMap creases, Local_mesh<Triang
       const auto found = edge_of.emplace(key, int(lm.edge_halfedges.size()));
       if (found.second) {
         halfedge_descriptor canonical = h;
-        if (lexicographically_smaller(lm.point(b), lm.point(a)) ||
-            (!lexicographically_smaller(lm.point(a), lm.point(b)) &&
-             lm.vertex_indices[std::size_t(b)] < lm.vertex_indices[std::size_t(a)])) {
+        if (against_canonical_direction(lm, a, b)) {
           std::swap(a, b);
           canonical = opposite(h, tm);
         }
