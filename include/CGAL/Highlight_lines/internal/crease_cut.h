@@ -20,8 +20,6 @@
 
 #include <array>
 #include <cstddef>
-#include <cstdint>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -127,27 +125,36 @@ void cut_at_creases(const TriangleMesh& tm, CreaseMap creases, Local_mesh<Triang
   lm.number_of_model_vertices = std::size_t(new_model_vertices);
 
   // 3. The edges of the model faces, in the order the faces reach them, with the canonical
-  // direction of build_local_mesh(): a crease edge becomes two edges, one per side.
+  // direction of build_local_mesh(): an edge stays one edge where the ends of its two sides
+  // agree, and becomes two (one per side) along a crease. A table of two slots per old edge
+  // finds them (a hash of the end pairs missed the cache on every side of a large mesh).
+  std::vector<std::array<int, 2>> new_edges_of(lm.edge_halfedges.size(), {-1, -1});
   lm.edge_halfedges.clear();
   lm.edge_vertices.clear();
-  std::unordered_map<std::uint64_t, int> edge_of;
   for (std::size_t f = 0; f < lm.number_of_model_faces; ++f) {
     halfedge_descriptor h = halfedge(lm.face_handles[f], tm);
     for (std::size_t j = 0; j < 3; ++j, h = next(h, tm)) {
       int a = lm.face_vertices[f][j], b = lm.face_vertices[f][(j + 1) % 3];
-      const std::uint64_t key =
-          (std::uint64_t(std::min(a, b)) << 32) | std::uint64_t(std::max(a, b));
-      const auto found = edge_of.emplace(key, int(lm.edge_halfedges.size()));
-      if (found.second) {
-        halfedge_descriptor canonical = h;
-        if (against_canonical_direction(lm, a, b)) {
-          std::swap(a, b);
-          canonical = opposite(h, tm);
+      std::array<int, 2>& slots = new_edges_of[std::size_t(lm.face_edges[f][j])];
+      int id = -1;
+      for (int& slot : slots) {
+        if (slot < 0) {
+          slot = int(lm.edge_halfedges.size());
+          halfedge_descriptor canonical = h;
+          if (against_canonical_direction(lm, a, b)) {
+            std::swap(a, b);
+            canonical = opposite(h, tm);
+          }
+          lm.edge_halfedges.push_back(canonical);
+          lm.edge_vertices.push_back({a, b});
         }
-        lm.edge_halfedges.push_back(canonical);
-        lm.edge_vertices.push_back({a, b});
+        const std::array<int, 2>& ends = lm.edge_vertices[std::size_t(slot)];
+        if ((ends[0] == a && ends[1] == b) || (ends[0] == b && ends[1] == a)) {
+          id = slot;
+          break;
+        }
       }
-      lm.face_edges[f][j] = found.first->second;
+      lm.face_edges[f][j] = id; // an edge has two sides on a triangle mesh: id >= 0
     }
   }
 
