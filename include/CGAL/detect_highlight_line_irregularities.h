@@ -151,9 +151,15 @@ planes through the centroid of its vertices normal to their principal axes (a mi
 one of them; an axis whose variance is within 5 % of the largest of another's is not tried: the
 axes of such a tie, a square plate's, are set by whatever breaks it, a dent on the plate
 included, which then lies on the plane) if three quarters of the vertices have their mirror
-image within `ē/10` of the surface; its own asymmetry `a0` is the 99th percentile of those distances, at least `ē/50`.
-A region's asymmetry `a` is the largest distance of the mirror image of one of its vertices to
-the surface, and its confidence is multiplied by `min(1, (a/a0)²)`. And the shape of a
+image within `ē/10` of the surface. Its own asymmetry is read from those distances twice, both
+at least `ē/50`: `a0`, their 99th percentile, marks the asymmetric vertices; `a1`, 8 times their
+median, is what a defect must exceed (defects lift the median only once they and their mirror
+images cover half of the vertices; a scan's 99th percentile lies at 4 to 8 times its median).
+A region's asymmetry `a` is the `k`-th largest distance of the mirror image of one of its
+vertices to the surface, `k` the number of its vertices within `w` of its centre: a defect moves
+a disc of about that size away from its mirror image, while a scan holds a few vertices far from
+theirs in almost any region of hundreds of vertices. Its confidence is multiplied by
+`min(1, (a/a1)²)`. And the shape of a
 region that holds anomalies near asymmetric vertices (farther than `a0` from their mirror
 image, or within `detection_scale` rings of one) is that of their cluster alone: the anomalies
 of the symmetric design next to a defect would chain with its own and make it look elongated.

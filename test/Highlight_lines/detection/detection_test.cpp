@@ -647,6 +647,49 @@ TEST(LocalResidual, FindsTheMirrorSymmetryOfDesignAndTheAsymmetryOfADefect)
   EXPECT_FALSE(Mirror_symmetry_of_mesh(smooth_hood(1)).symmetry.is_symmetric());
 }
 
+// A symmetric scan is less symmetric than a design: the shared camel head's mirror images lie
+// up to 0.21 ē off it (99th percentile), 8 times its median. A design region of hundreds of
+// vertices nearly always holds a few vertices that far off, so the region's asymmetry is taken
+// over a disc of the detection's scale, and measured against the scan's own asymmetry from the
+// median, which defects do not lift. Measured on the undented camel head: 6 design regions (its
+// eye sockets, nostrils, mouth corners, each with its mirror image among the regions) passed the
+// automatic mode's level with the largest distance against the 99th percentile, none since.
+TEST(LocalResidual, LeavesTheDesignOfASymmetricScanAlone)
+{
+  HB::Mesh camel;
+  if (!test::read_shared_mesh("camelhead.off", camel))
+    GTEST_SKIP() << "shared mesh camelhead.off not found";
+  const double e = test::mean_edge_length(camel);
+  const Mirror_symmetry_of_mesh mirror(camel);
+  ASSERT_TRUE(mirror.symmetry.is_symmetric());
+  EXPECT_GT(mirror.symmetry.tolerance(), 0.1 * e); // a scan: far above the floor ē/50
+  EXPECT_GT(mirror.symmetry.defect_tolerance(), mirror.symmetry.tolerance());
+  const auto found = detect_local_residual(camel, true);
+  EXPECT_GE(found.size(), 10u); // the lines do bend over the design
+  for (const auto& region : found)
+    EXPECT_LT(region.confidence, 0.5) << HB::describe(region);
+}
+
+// The surface's own asymmetry against which a defect's is measured holds while defects cover
+// much of a small mesh: four defects 1 ē high and 5 ē wide on the shared Spot (a symmetric
+// design, its own asymmetry below the floor ē/50) cover, with their mirror images, about a
+// quarter of its vertices. They lift the 99th percentile of the distances to near their height
+// (measured: 0.79 ē); the defect tolerance stays below a tenth of it (0.062 ē: 8 times a median
+// that they lift from 1e-15 ē).
+TEST(MirrorSymmetry, DefectToleranceIsNotLiftedByTheDefects)
+{
+  HB::Mesh spot;
+  if (!test::read_shared_mesh("spot.off", spot))
+    GTEST_SKIP() << "shared mesh spot.off not found";
+  const double e = test::mean_edge_length(spot);
+  const auto defects = HB::inject_defects(spot, 4, 5.0, 1.0, 1, [](auto) { return true; });
+  ASSERT_EQ(defects.size(), 4u);
+  const Mirror_symmetry_of_mesh mirror(spot);
+  ASSERT_TRUE(mirror.symmetry.is_symmetric());
+  EXPECT_GT(mirror.symmetry.tolerance(), 0.5 * e);
+  EXPECT_LT(mirror.symmetry.defect_tolerance(), 0.1 * e);
+}
+
 // The demo's --detect mode with the local residual (60 lines, the default 3 x 2 light setups):
 // the roof dent comes first, a dent, with confidence 1; the design of the car (measured: 33
 // regions, confidence at most 0.0054, all symmetric) stays far below the level at which the
@@ -702,9 +745,12 @@ Ranking rank_injected_defects(const HB::Mesh& original)
 // On the shared Beetle, dents and bumps 0.2 ē high (seeds 1-2, 2 x 4): each one found ranks
 // above every region of the undented Beetle (measured: 6 of 8, the two others are not found;
 // 0 of 8 before the symmetry rule, when a round design bump on the midplane had confidence 1),
-// and half of them pass the level at which the automatic mode fairs (measured: 3 of 6, with
-// confidence 0.67 to 1; none when the shape of a defect's anomalies was measured with those of
-// the symmetric design next to it, which made them look elongated).
+// and a third of them pass the level at which the automatic mode fairs (measured: 2 of 6; none
+// when the shape of a defect's anomalies was measured with those of the symmetric design next
+// to it, which made them look elongated; 3 of 6 with a region's asymmetry its largest distance,
+// which let the design of symmetric scans pass, see LeavesTheDesignOfASymmetricScanAlone: a
+// region that holds only part of a shallow defect has fewer displaced vertices than a disc of
+// the detection's scale).
 TEST(LocalResidual, RanksDefectsAboveTheDesignOfASymmetricShape)
 {
   HB::Mesh original;
@@ -713,7 +759,7 @@ TEST(LocalResidual, RanksDefectsAboveTheDesignOfASymmetricShape)
   const Ranking r = rank_injected_defects(original);
   EXPECT_EQ(r.defects, 8u);
   EXPECT_GE(r.above, 6u);
-  EXPECT_GE(r.confident, 3u);
+  EXPECT_GE(r.confident, 2u);
 }
 
 // On a scan without a mirror symmetry (the shared bunny, 0.2 ē, seeds 1-2, 2 x 3 defects: the

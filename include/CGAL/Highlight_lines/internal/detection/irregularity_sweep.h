@@ -22,6 +22,7 @@
 #include <boost/graph/graph_traits.hpp>
 
 #include <algorithm>
+#include <functional>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -309,17 +310,11 @@ public:
         // Design is symmetric: on a mirror symmetric surface, a region whose surface has its
         // mirror image (up to the surface's own asymmetry) is design, however round and
         // isolated; a defect moves its surface by its height away from its mirror image.
-        if (mirror_ && mirror_->is_symmetric()) {
-          double asymmetry = 0;
-          for (int f : region.faces)
-            for (int v : corners_[std::size_t(f)]) {
-              double& a = mirror_distance_[std::size_t(v)];
-              if (!(a >= 0))
-                a = mirror_->asymmetry(v);
-              asymmetry = (std::max)(asymmetry, a);
-            }
-          irregularity.confidence *= (std::min)(1.0, std::pow(asymmetry / mirror_->tolerance(), 2));
-        }
+        if (mirror_ && mirror_->is_symmetric())
+          irregularity.confidence *=
+              (std::min)(1.0, std::pow(region_asymmetry(region.faces, region.centre, w) /
+                                           mirror_->defect_tolerance(),
+                                       2));
         irregularity.kind = kind_of_region(shape, [&] {
           return dent_or_bump_around_centre(local_, points_, corners_, adjacency_, sharp_,
                                             region.faces, region.centre,
@@ -414,6 +409,39 @@ public:
   }
 
 private:
+  // How far a region's surface lies from its mirror image: the k-th largest distance of its
+  // vertices' mirror images to the surface, k the number of its vertices within `w` of its
+  // centre. A defect moves a disc of about that size away from its mirror image; the largest
+  // distance alone is that of the few vertices where a scan is least symmetric, which a region
+  // of hundreds of vertices nearly always holds (the shared camel head: 6 design regions passed
+  // the automatic mode's level on the undented scan, none since).
+  double region_asymmetry(const std::vector<int>& faces, int centre, double w)
+  {
+    using namespace vector3;
+    std::vector<int> vertices;
+    for (int f : faces)
+      for (int v : corners_[std::size_t(f)])
+        vertices.push_back(v);
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    std::vector<double> distances;
+    std::size_t near_centre = 0;
+    for (int v : vertices) {
+      double& a = mirror_distance_[std::size_t(v)];
+      if (!(a >= 0))
+        a = mirror_->asymmetry(v);
+      distances.push_back(a);
+      const Vec3 d = points_[std::size_t(v)] - points_[std::size_t(centre)];
+      near_centre += dot(d, d) <= w * w;
+    }
+    if (distances.empty())
+      return 0;
+    const std::size_t k = (std::min)((std::max)(near_centre, std::size_t(1)), distances.size());
+    std::nth_element(distances.begin(), distances.begin() + std::ptrdiff_t(k - 1), distances.end(),
+                     std::greater<double>());
+    return distances[k - 1];
+  }
+
   // The compact id of a mesh vertex (-1 if it is not a model vertex).
   int compact_vertex(vertex_descriptor v) const
   {
