@@ -19,6 +19,8 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <iterator>
+#include <string>
 #include <vector>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -35,6 +37,8 @@ std::size_t bent_lines(const Polylines& polylines, double fraction)
 {
   std::size_t bent = 0;
   for (const auto& polyline : polylines) {
+    if (polyline.empty())
+      continue;
     const K::Segment_3 chord(polyline.front(), polyline.back());
     const double length2 = chord.squared_length();
     bool straight = length2 > 0;
@@ -103,5 +107,7 @@ int main(int argc, char** argv)
     std::cerr << "cannot write " << prefix << ".*.polylines.txt\n";
     return 1;
   }
+  std::cout << "wrote " << prefix << ".paper.polylines.txt and " << prefix
+            << ".creases.polylines.txt\n";
   return cut.lines().empty() ? 1 : 0;
 }

@@ -153,8 +153,10 @@ axes of such a tie, a square plate's, are set by whatever breaks it, a dent on t
 included, which then lies on the plane) if three quarters of the vertices have their mirror
 image within `ē/10` of the surface. Its own asymmetry is read from those distances twice, both
 at least `ē/50`: `a0`, their 99th percentile, marks the asymmetric vertices; `a1`, 8 times their
-median, is what a defect must exceed (defects lift the median only once they and their mirror
-images cover half of the vertices; a scan's 99th percentile lies at 4 to 8 times its median).
+median, is what a defect must exceed (defects lift the median far less than the 99th
+percentile until they and their mirror images cover half of the vertices: four defects 1 `ē`
+high over a quarter of the shared Spot's vertices lift `a0` to 0.79 `ē`, `a1` to 0.062 `ē`; a
+scan's 99th percentile lies at 4 to 8 times its median).
 A region's asymmetry `a` is the `k`-th largest distance of the mirror image of one of its
 vertices to the surface, `k` the number of its vertices within `w` of its centre: a defect moves
 a disc of about that size away from its mirror image, while a scan holds a few vertices far from

@@ -648,7 +648,7 @@ TEST(LocalResidual, FindsTheMirrorSymmetryOfDesignAndTheAsymmetryOfADefect)
 }
 
 // A symmetric scan is less symmetric than a design: the shared camel head's mirror images lie
-// up to 0.21 ē off it (99th percentile), 8 times its median. A design region of hundreds of
+// up to 0.21 ē off it (99th percentile), 7.3 times its median. A design region of hundreds of
 // vertices nearly always holds a few vertices that far off, so the region's asymmetry is taken
 // over a disc of the detection's scale, and measured against the scan's own asymmetry from the
 // median, which defects do not lift. Measured on the undented camel head: 6 design regions (its
