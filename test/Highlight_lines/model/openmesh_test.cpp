@@ -67,6 +67,21 @@ struct Meshes_with_creases
     CGAL::Polygon_mesh_processing::detect_sharp_edges(sm, 60, creases_sm());
     CGAL::Polygon_mesh_processing::detect_sharp_edges(om, 60, creases_om());
   }
+
+  // The models cut along the creases, under oblique lights that cross every side of the box.
+  const Lights lights{Point(0.5, 0.5, 4), Vector(2, -1, 0), Vector(1, 2, 3), 0.05};
+  auto model_sm()
+  {
+    return CGAL::compute_highlight_lines(
+        sm, lights, CGAL::Emptyset_iterator(),
+        CGAL::Highlight_lines::parameters::crease_edge_map(creases_sm()));
+  }
+  auto model_om()
+  {
+    return CGAL::compute_highlight_lines(
+        om, lights, CGAL::Emptyset_iterator(),
+        CGAL::Highlight_lines::parameters::crease_edge_map(creases_om()));
+  }
 };
 
 TEST(Invariance, OpenMeshAndSurfaceMeshAgree)
@@ -102,19 +117,10 @@ TEST(Invariance, OpenMeshAndSurfaceMeshAgree)
 // the lines of Surface_mesh.
 TEST(Invariance, OpenMeshAndSurfaceMeshAgreeWithCreases)
 {
-  const Soup soup = jittered_box(8, 0.2, 13);
-  Meshes_with_creases meshes(soup);
-  const Surface_mesh& sm = meshes.sm;
-  const Open_mesh& om = meshes.om;
-  const auto creases_sm = meshes.creases_sm();
-  const auto creases_om = meshes.creases_om();
-  const Lights lights(Point(0.5, 0.5, 4), Vector(2, -1, 0), Vector(1, 2, 3), 0.05);
+  Meshes_with_creases meshes(jittered_box(8, 0.2, 13));
   std::vector<std::vector<Point>> a;
-  CGAL::compute_highlight_lines(sm, lights, std::back_inserter(a),
-                                CGAL::Highlight_lines::parameters::crease_edge_map(creases_sm));
-  const auto b =
-      CGAL::compute_highlight_lines(om, lights, CGAL::Emptyset_iterator(),
-                                    CGAL::Highlight_lines::parameters::crease_edge_map(creases_om));
+  meshes.model_sm().polylines(std::back_inserter(a));
+  const auto b = meshes.model_om();
   ASSERT_GT(a.size(), 20u);
   ASSERT_EQ(a.size(), b.lines().size());
   std::vector<std::vector<std::array<double, 3>>> la, lb;
@@ -149,29 +155,21 @@ TEST(Invariance, OpenMeshAndSurfaceMeshAgreeWithCreases)
 // the same counts and lines as Surface_mesh, whose border halfedge comes first.
 TEST(Invariance, OpenMeshAndSurfaceMeshAgreeWithCreasesOnAnOpenMesh)
 {
-  const Soup soup = jittered_box(8, 0.2, 17, true);
-  Meshes_with_creases meshes(soup);
-  const Surface_mesh& sm = meshes.sm;
-  const Open_mesh& om = meshes.om;
-  const auto creases_sm = meshes.creases_sm();
-  const auto creases_om = meshes.creases_om();
-  const Lights lights(Point(0.5, 0.5, 4), Vector(2, -1, 0), Vector(1, 2, 3), 0.05);
+  Meshes_with_creases meshes(jittered_box(8, 0.2, 17, true));
+  const auto a = meshes.model_sm();
+  const auto b = meshes.model_om();
   namespace HLP = CGAL::Highlight_lines::parameters;
-  const auto a = CGAL::compute_highlight_lines(sm, lights, CGAL::Emptyset_iterator(),
-                                               HLP::crease_edge_map(creases_sm));
-  const auto b = CGAL::compute_highlight_lines(om, lights, CGAL::Emptyset_iterator(),
-                                               HLP::crease_edge_map(creases_om));
   // Sectors: the 4 bottom corners have 3, the 7 inner vertices of the 8 box edges left 2, the
   // 4 rim corners 2 (two walls), the other rim vertices 1.
-  const std::size_t copies = num_vertices(sm) + 4 * 2 + 8 * 7 + 4 * 1;
+  const std::size_t copies = num_vertices(meshes.sm) + 4 * 2 + 8 * 7 + 4 * 1;
   EXPECT_EQ(CGAL::Highlight_lines::Highlight_line_sweeper<Surface_mesh>(
-                sm, HLP::crease_edge_map(creases_sm))
+                meshes.sm, HLP::crease_edge_map(meshes.creases_sm()))
                 .number_of_vertices(),
             copies);
-  EXPECT_EQ(
-      CGAL::Highlight_lines::Highlight_line_sweeper<Open_mesh>(om, HLP::crease_edge_map(creases_om))
-          .number_of_vertices(),
-      copies);
+  EXPECT_EQ(CGAL::Highlight_lines::Highlight_line_sweeper<Open_mesh>(
+                meshes.om, HLP::crease_edge_map(meshes.creases_om()))
+                .number_of_vertices(),
+            copies);
   EXPECT_EQ(a.number_of_undefined_vertices(), b.number_of_undefined_vertices());
   ASSERT_GT(a.lines().size(), 10u);
   ASSERT_EQ(a.lines().size(), b.lines().size());
