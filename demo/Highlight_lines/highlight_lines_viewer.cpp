@@ -26,6 +26,7 @@
 #include <deque>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -35,7 +36,7 @@ namespace {
 using namespace viewer;
 
 const char* usage =
-    "usage: highlight_lines_viewer [MESH] [--script FILE] [--size W H]\n"
+    "usage: highlight_lines_viewer [MESH] [--crease-angle DEG] [--script FILE] [--size W H]\n"
     "\n"
     "Shows a triangle mesh (OFF, OBJ, PLY or STL; default: the bundled VW Beetle body) with\n"
     "its highlight lines under a row of tube lights placed above it.\n"
@@ -44,7 +45,14 @@ const char* usage =
     "       ctrl+left drag move the lights across (x) and tilt them (y), ctrl+right drag turn "
     "them\n"
     "keys:  left/right move the lights across, a/d turn them, w/s tilt them, up/down spacing,\n"
-    "       z zebra, l lines, f fair the region, escape cancel, ctrl+z undo, ctrl+y redo\n"
+    "       z zebra, l lines, c creases, f fair the region, escape cancel, ctrl+z undo,\n"
+    "       ctrl+y redo\n"
+    "\n"
+    "--crease-angle DEG cuts the model along the creases: the edges whose faces' normals\n"
+    "differ by more than DEG degrees (Polygon_mesh_processing::detect_sharp_edges()), so that\n"
+    "the lines of a CAD part run straight on its flat faces and end at its creases (key c\n"
+    "toggles it, at 45 degrees unless given; the shading and the zebra keep one normal per\n"
+    "vertex).\n"
     "\n"
     "--script FILE runs these actions, one per line and one per frame (# starts a comment):\n"
     "  load PATH                  read a mesh\n"
@@ -58,6 +66,7 @@ const char* usage =
     "  camera AZIMUTH ELEVATION ZOOM  view direction in degrees, zoom (1: whole mesh)\n"
     "  frames N                   draw N frames, print their mean time\n"
     "  zebra on|off, lines on|off the zebra stripes of the same distance field; the lines\n"
+    "  creases DEG|off            cut the model along the creases sharper than DEG degrees\n"
     "  pick X Y                   pick the face under pixel (X, Y) (from the top left)\n"
     "  pick_face ID               pick face ID (at its centroid)\n"
     "  grow RADIUS                the region: faces around the picked point within RADIUS\n"
@@ -411,6 +420,9 @@ struct App
   std::optional<std::pair<Face, Point>> picked;
   double region_radius = 0;
   int fairing_iterations = 50;
+  double crease_angle = 45; // of the cut model, when key c or the panel turns it on
+  float crease_slider = 45;
+  bool crease_slider_held = false;
   bool showing_before = false;
   int panel_width = 330;
   int frames = 0;
@@ -469,6 +481,25 @@ struct App
     if (scripted) // the time of each step of a scripted sweep, on the terminal
       std::printf("lights: %zu segments, updated in %.2f ms\n", session.line_segments().size(),
                   session.update_milliseconds());
+    return true;
+  }
+
+  // The model cut along the creases sharper than `degrees`, or the paper's (none).
+  bool set_creases(std::optional<double> degrees)
+  {
+    std::string error;
+    if (!session.set_crease_angle(degrees, error)) {
+      say("creases: " + error);
+      return false;
+    }
+    if (degrees) {
+      crease_angle = *degrees;
+      std::ostringstream message;
+      message << "cut along " << session.number_of_crease_edges()
+              << " crease edges (normals differ by more than " << *degrees << " degrees)";
+      say(message.str());
+    } else
+      say("no creases: the paper's model");
     return true;
   }
 
@@ -643,6 +674,19 @@ struct App
       in >> on;
       (action == "zebra" ? view.zebra : view.show_lines) = on == "on";
       return on == "on" || on == "off";
+    }
+    if (action == "creases") {
+      std::string value;
+      in >> value;
+      if (value == "off")
+        return set_creases(std::nullopt);
+      char* end = nullptr;
+      const double degrees = std::strtod(value.c_str(), &end);
+      if (value.empty() || *end != '\0') {
+        say("creases: expected an angle in degrees or off");
+        return false;
+      }
+      return set_creases(degrees);
     }
     if (action == "pick") {
       double x = 0, y = 0;
@@ -870,6 +914,10 @@ struct App
     case GLFW_KEY_L:
       view.show_lines = !view.show_lines;
       return;
+    case GLFW_KEY_C:
+      if (action == GLFW_PRESS)
+        set_creases(session.crease_angle() ? std::nullopt : std::optional<double>(crease_angle));
+      return;
     case GLFW_KEY_F:
       if (action == GLFW_PRESS)
         fair();
@@ -934,6 +982,19 @@ struct App
       ImGui::Checkbox("zebra stripes", &view.zebra);
       ImGui::SameLine();
       ImGui::Checkbox("lines", &view.show_lines);
+      bool cut = bool(session.crease_angle());
+      if (ImGui::Checkbox("cut along creases", &cut))
+        set_creases(cut ? std::optional<double>(crease_angle) : std::nullopt);
+      if (cut) {
+        // Applied when the slider is released: each angle finds the creases and cuts anew.
+        if (!crease_slider_held)
+          crease_slider = float(crease_angle);
+        ImGui::SliderFloat("crease angle", &crease_slider, 1, 179, "%.0f deg");
+        crease_slider_held = ImGui::IsItemActive();
+        if (ImGui::IsItemDeactivatedAfterEdit())
+          set_creases(double(crease_slider));
+        ImGui::Text("%zu crease edges", session.number_of_crease_edges());
+      }
     }
 
     if (ImGui::CollapsingHeader("Region", ImGuiTreeNodeFlags_DefaultOpen)) {
@@ -1104,6 +1165,7 @@ int main(int argc, char** argv)
 {
   std::string mesh_path = std::string(HIGHLIGHT_LINES_DATA_DIR) + "/beetle.off";
   std::string script_path;
+  std::optional<double> crease_angle;
   int width = 1280, height = 800;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -1112,6 +1174,14 @@ int main(int argc, char** argv)
       return 0;
     } else if (a == "--script" && i + 1 < argc) {
       script_path = argv[++i];
+    } else if (a == "--crease-angle" && i + 1 < argc) {
+      char* end = nullptr;
+      crease_angle = std::strtod(argv[++i], &end);
+      if (*end != '\0' || !(*crease_angle > 0 && *crease_angle < 180)) {
+        std::cerr << "highlight_lines_viewer: --crease-angle must lie strictly between 0 and 180 "
+                     "degrees\n";
+        return 2;
+      }
     } else if (a == "--size" && i + 2 < argc) {
       width = std::atoi(argv[++i]);
       height = std::atoi(argv[++i]);
@@ -1169,6 +1239,11 @@ int main(int argc, char** argv)
     ImGui_ImplGlfw_InitForOpenGL(window, true);
     ImGui_ImplOpenGL2_Init();
     app.stripe_texture = make_stripe_texture();
+    if (crease_angle) { // for every mesh loaded
+      std::string error;
+      app.session.set_crease_angle(crease_angle, error);
+      app.crease_angle = *crease_angle;
+    }
 
     if (!script_path.empty() && !app.read_script(script_path)) {
       std::cerr << "highlight_lines_viewer: cannot read the script " << script_path << "\n";

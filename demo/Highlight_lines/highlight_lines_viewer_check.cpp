@@ -3,7 +3,9 @@
 //   - the screenshots are PNG files that are not blank, and the two taken before and after a
 //     sweep of the lights differ;
 //   - the lines saved before and after the sweep are compute_highlight_lines() for the lights
-//     saved with them, and differ;
+//     saved with them, and differ; those saved with the model cut along the creases are
+//     compute_highlight_lines() with crease_edge_map (PMP::detect_sharp_edges() at 30 degrees),
+//     and differ from the paper's;
 //   - the region is the face CGAL's AABB tree finds first along the viewer's picking ray, grown
 //     across edges to the faces whose corners lie within the radius of the hit point;
 //   - the faired mesh is fair_with_highlight_lines() of that region with the saved lights and
@@ -15,6 +17,7 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/compute_highlight_lines.h>
 #include <CGAL/fair_with_highlight_lines.h>
@@ -278,6 +281,26 @@ int main(int argc, char** argv)
                std::to_string(expected.size()) + ")");
   }
   expect(saved_lines[0] != saved_lines[1], "the lines moved with the lights");
+
+  // Lines cut along the creases sharper than 30 degrees, with the lights after the sweep.
+  {
+    std::pair<long long, long long> levels(0, -1);
+    const auto lights = read_lights(dir + "/lights_creases.txt", &levels);
+    auto creases = mesh.add_property_map<Mesh::Edge_index, bool>("e:check_crease", false).first;
+    CGAL::Polygon_mesh_processing::detect_sharp_edges(mesh, 30, creases);
+    std::vector<std::vector<K::Point_3>> expected;
+    CGAL::compute_highlight_lines(
+        mesh, lights, std::back_inserter(expected),
+        HLP::crease_edge_map(HLP::combine(HLP::level_range(levels), HLP::facing_side_only(true)),
+                             creases));
+    const auto saved = read_polylines(dir + "/lines_creases.polylines.txt");
+    expect(!expected.empty() && saved == flat(expected),
+           "lines_creases are compute_highlight_lines() with crease_edge_map at 30 degrees (" +
+               std::to_string(saved.size()) + " lines, expected " +
+               std::to_string(expected.size()) + ")");
+    expect(saved != saved_lines[1], "the cut model's lines differ from the paper's");
+    mesh.remove_property_map(creases);
+  }
 
   // The region.
   typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;

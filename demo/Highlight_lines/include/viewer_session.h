@@ -10,6 +10,7 @@
 #include <CGAL/Highlight_lines/default_light_setup.h>
 #include <CGAL/Highlight_lines/fairing_building_blocks.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/detect_highlight_line_irregularities.h>
 #include <CGAL/fair_with_highlight_lines.h>
@@ -41,6 +42,7 @@ typedef K::Vector_3 Vector;
 typedef CGAL::Surface_mesh<Point> Mesh;
 typedef Mesh::Face_index Face;
 typedef Mesh::Vertex_index Vertex;
+typedef Mesh::Edge_index Edge;
 namespace HL = CGAL::Highlight_lines;
 namespace HLP = CGAL::Highlight_lines::parameters;
 typedef HL::Light_setup<K> Lights;
@@ -285,6 +287,7 @@ public:
       return false;
     }
     path_ = path;
+    creases_ = mesh_->add_property_map<Edge, bool>("e:viewer_crease", false).first;
     ++mesh_generation_;
     ++positions_revision_;
     controls_ = Light_controls();
@@ -295,6 +298,10 @@ public:
     history_index_ = 0;
     compute_bounding_box();
     update_normals();
+    if (crease_angle_) { // as asked for before this mesh
+      update_creases();
+      rebuild_sweeper();
+    }
     update_lines();
     return true;
   }
@@ -353,6 +360,33 @@ public:
                       3.14159265358979323846;
     return set_light_controls(c, error);
   }
+  // Cuts the model along the creases: the edges whose faces' normals differ by more than
+  // `degrees` (Polygon_mesh_processing::detect_sharp_edges(), found again whenever the mesh
+  // moves), so that the lines of a CAD part run straight on its flat faces and end at its
+  // creases (the library's crease_edge_map); none: the paper's model, one normal per vertex.
+  // The shading and the zebra keep one normal per vertex. False (nothing changed, the reason in
+  // `error`) for an angle outside (0, 180).
+  bool set_crease_angle(std::optional<double> degrees, std::string& error)
+  {
+    if (degrees && !(*degrees > 0 && *degrees < 180)) {
+      error = "the crease angle must lie strictly between 0 and 180 degrees";
+      return false;
+    }
+    if (job_running()) {
+      error = "a computation is running";
+      return false;
+    }
+    crease_angle_ = degrees;
+    if (!has_mesh()) // kept for the mesh to come
+      return true;
+    update_creases();
+    rebuild_sweeper();
+    update_lines();
+    return true;
+  }
+  const std::optional<double>& crease_angle() const { return crease_angle_; }
+  std::size_t number_of_crease_edges() const { return number_of_crease_edges_; }
+
   // The highlight lines as polylines (a closed line repeats its first point), in the model's
   // canonical order: traced from the model on the first call after a change (the lines drawn
   // are the segments below, which need no tracing).
@@ -626,7 +660,11 @@ private:
   {
     for (Vertex v : vertices(*mesh_))
       mesh_->point(v) = positions[std::size_t(v)];
-    sweeper_->update_positions();
+    if (crease_angle_) { // the creases may have changed with the positions
+      update_creases();
+      rebuild_sweeper();
+    } else
+      sweeper_->update_positions();
     ++positions_revision_;
     update_normals();
     update_lines();
@@ -674,6 +712,26 @@ private:
   auto lines_parameters() const
   {
     return HLP::combine(HLP::level_range(levels_), HLP::facing_side_only(true));
+  }
+
+  // The creases at the angle asked for, and a sweeper that cuts the mesh along them (it reads
+  // them when it is built); without an angle, the sweeper of the paper's model is kept.
+  void update_creases()
+  {
+    number_of_crease_edges_ = 0;
+    if (!crease_angle_)
+      return;
+    for (Edge e : edges(*mesh_))
+      creases_[e] = false;
+    CGAL::Polygon_mesh_processing::detect_sharp_edges(*mesh_, *crease_angle_, creases_);
+    for (Edge e : edges(*mesh_))
+      number_of_crease_edges_ += creases_[e] ? 1 : 0;
+  }
+  void rebuild_sweeper()
+  {
+    sweeper_.reset();
+    sweeper_ = crease_angle_ ? std::make_unique<Sweeper>(*mesh_, HLP::crease_edge_map(creases_))
+                             : std::make_unique<Sweeper>(*mesh_);
   }
 
   // New lights or a moved mesh: the lights that fall on the surface, the lines through the
@@ -823,6 +881,10 @@ private:
   double box_diagonal_ = 1;
   std::vector<double> normals_, distances_;
   bool distance_field_wanted_ = false;
+  // The crease edges of the cut model, if one is asked for.
+  Mesh::Property_map<Edge, bool> creases_;
+  std::optional<double> crease_angle_;
+  std::size_t number_of_crease_edges_ = 0;
 
   std::optional<Lights> reference_lights_, lights_;
   Light_controls controls_;
