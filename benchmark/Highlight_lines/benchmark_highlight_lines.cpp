@@ -133,7 +133,8 @@ void BM_compute_highlight_lines(benchmark::State& state)
 }
 
 // The same model cut along the creases (crease_edge_map; here the edges sharper than 20
-// degrees, found once outside the timing): the cut adds a pass over the vertices' rings.
+// degrees, found once outside the timing): the cut adds a pass over the edges and walks the
+// rings of the vertices on crease edges.
 void BM_compute_highlight_lines_with_creases(benchmark::State& state)
 {
   static Mesh mesh = big_mesh();

@@ -66,9 +66,10 @@ struct Local_mesh
   Compact_ids face_ids;
   std::function<std::size_t(face_descriptor)> face_index;
 
-  // A mesh cut along creases (crease_cut.h): the faces of each model vertex's sector, at
-  // [sector_face_begin[v], sector_face_begin[v + 1]); empty otherwise.
-  std::vector<int> sector_face_begin, sector_faces;
+  // A mesh cut along creases (crease_cut.h): the vertices with several sectors and their
+  // copies, sorted, and the faces of the i-th one's sector at
+  // [sector_face_begin[i], sector_face_begin[i + 1]); empty otherwise.
+  std::vector<int> sector_vertices, sector_face_begin, sector_faces;
 
   const double* point(int v) const { return &xyz[3 * std::size_t(v)]; }
 
@@ -77,10 +78,11 @@ struct Local_mesh
   template <typename F>
   void for_each_face_around(int v, F&& f) const
   {
-    if (!sector_face_begin.empty()) {
-      for (int i = sector_face_begin[std::size_t(v)]; i < sector_face_begin[std::size_t(v) + 1];
-           ++i)
-        f(sector_faces[std::size_t(i)]);
+    const auto sector = std::lower_bound(sector_vertices.begin(), sector_vertices.end(), v);
+    if (sector != sector_vertices.end() && *sector == v) {
+      const std::size_t i = std::size_t(sector - sector_vertices.begin());
+      for (int k = sector_face_begin[i]; k < sector_face_begin[i + 1]; ++k)
+        f(sector_faces[std::size_t(k)]);
       return;
     }
     for (halfedge_descriptor h :

@@ -18,6 +18,7 @@
 #include <CGAL/boost/graph/iterator.h>
 #include <boost/property_map/property_map.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <utility>
@@ -28,9 +29,10 @@ namespace Highlight_lines {
 namespace internal {
 
 // Cuts `lm` along the edges e with get(creases, e) == true: each model vertex gets one local
-// vertex per sector (the faces around it between two crease edges or mesh borders), the edges
-// of the model faces are renumbered, and lm.sector_faces lists each model vertex's faces for
-// the exact evaluations. Without crease edges at a vertex, nothing changes there.
+// vertex per sector (the faces around it between two crease edges or mesh borders), an edge
+// along a crease gets one per side, and lm.sector_faces lists the faces of each vertex with
+// several sectors for the exact evaluations. Without crease edges at a vertex, nothing changes
+// there.
 template <typename TriangleMesh, typename CreaseMap>
 void cut_at_creases(const TriangleMesh& tm, CreaseMap creases, Local_mesh<TriangleMesh>& lm)
 {
@@ -40,26 +42,45 @@ void cut_at_creases(const TriangleMesh& tm, CreaseMap creases, Local_mesh<Triang
   const std::size_t model_vertices = lm.number_of_model_vertices;
   const std::size_t old_vertices = lm.vertex_handles.size();
 
-  // 1. The sector of each face corner at a model vertex. Around the target of h_i, the faces
+  // Only the rings of the vertices on a crease edge are walked, and only their corners, faces
+  // and edges change: a CAD part has thousands of them among millions of vertices, and arrays
+  // over the whole mesh (first touched, on a large mesh) cost more than the cut itself.
+  std::vector<char> on_crease(model_vertices, 0);
+  for (std::size_t e = 0; e < lm.edge_halfedges.size(); ++e)
+    if (get(creases, edge(lm.edge_halfedges[e], tm)))
+      for (int u : lm.edge_vertices[e])
+        on_crease[std::size_t(u)] = 1; // the ends of a model face's edge are model vertices
+  // On a face range, a model vertex on its border also has edges of the one-ring closure only.
+  for (std::size_t f = lm.number_of_model_faces; f < lm.face_handles.size(); ++f) {
+    halfedge_descriptor h = halfedge(lm.face_handles[f], tm);
+    for (std::size_t j = 0; j < 3; ++j, h = next(h, tm))
+      if (get(creases, edge(h, tm)))
+        for (int u : {lm.face_vertices[f][j], lm.face_vertices[f][(j + 1) % 3]})
+          if (std::size_t(u) < model_vertices)
+            on_crease[std::size_t(u)] = 1;
+  }
+
+  // 1. The sector of each face corner at a crease vertex. Around the target of h_i, the faces
   // face(h_i) and face(h_{i+1}) share the edge of next(h_i).
-  std::vector<int> corner_sector(3 * lm.face_vertices.size(), 0);
-  std::vector<int> sectors(model_vertices, 1);
+  struct Corner
+  {
+    std::size_t split; // the vertex, by position in `split`
+    int face, corner, sector;
+  };
+  std::vector<Corner> corners;     // of the vertices with several sectors
+  std::vector<int> split, sectors; // those vertices, and their numbers of sectors
   std::vector<int> ring_faces;
   std::vector<char> cut_after;
-  bool any_cut = false;
   for (std::size_t v = 0; v < model_vertices; ++v) {
+    if (!on_crease[v])
+      continue;
     ring_faces.clear();
     cut_after.clear();
-    bool has_crease = false;
     for (halfedge_descriptor h : halfedges_around_target(halfedge(lm.vertex_handles[v], tm), tm)) {
       const face_descriptor f = face(h, tm);
       ring_faces.push_back(f == GT::null_face() ? -1 : lm.face_ids.find(lm.face_index(f)));
-      const bool crease = get(creases, edge(next(h, tm), tm));
-      cut_after.push_back(crease);
-      has_crease = has_crease || crease;
+      cut_after.push_back(get(creases, edge(next(h, tm), tm)));
     }
-    if (!has_crease)
-      continue;
     const std::size_t n = ring_faces.size();
     auto boundary_before = [&](std::size_t i) {
       const std::size_t previous = (i + n - 1) % n;
@@ -71,6 +92,7 @@ void cut_at_creases(const TriangleMesh& tm, CreaseMap creases, Local_mesh<Triang
         start = i;
     if (start == n)
       continue; // not reached: a crease edge is a boundary
+    const std::size_t first_corner = corners.size();
     int sector = 0;
     bool sector_used = false;
     for (std::size_t k = 0; k < n; ++k) {
@@ -85,93 +107,118 @@ void cut_at_creases(const TriangleMesh& tm, CreaseMap creases, Local_mesh<Triang
       sector_used = true;
       for (int c = 0; c < 3; ++c)
         if (lm.face_vertices[std::size_t(f)][std::size_t(c)] == int(v))
-          corner_sector[3 * std::size_t(f) + std::size_t(c)] = sector;
+          corners.push_back({split.size(), f, c, sector});
     }
     // A boundary passed last (a border halfedge at the end of the ring, as OpenMesh's
     // halfedge(v) gives it) opens no sector: only sectors with faces count. A vertex where a
     // single crease edge ends keeps one sector.
-    sectors[v] = sector + (sector_used ? 1 : 0);
-    any_cut = any_cut || sectors[v] > 1;
+    const int count = sector + (sector_used ? 1 : 0);
+    if (count > 1) {
+      split.push_back(int(v));
+      sectors.push_back(count);
+    } else
+      corners.resize(first_corner);
   }
-  if (!any_cut)
+  if (split.empty())
     return;
 
-  // 2. New vertex ids: the sectors of a model vertex follow each other; model vertices stay
-  // first.
-  std::vector<int> first_id(model_vertices + 1, 0);
-  for (std::size_t v = 0; v < model_vertices; ++v)
-    first_id[v + 1] = first_id[v] + sectors[v];
-  const int new_model_vertices = first_id[model_vertices];
-  std::vector<typename Local_mesh<TriangleMesh>::vertex_descriptor> handles;
-  std::vector<std::size_t> indices;
-  std::vector<double> xyz;
-  handles.reserve(std::size_t(new_model_vertices) + old_vertices - model_vertices);
-  for (std::size_t v = 0; v < old_vertices; ++v)
-    for (int s = 0; s < (v < model_vertices ? sectors[v] : 1); ++s) {
-      handles.push_back(lm.vertex_handles[v]);
-      indices.push_back(lm.vertex_indices[v]);
-      xyz.insert(xyz.end(), lm.xyz.begin() + std::ptrdiff_t(3 * v),
-                 lm.xyz.begin() + std::ptrdiff_t(3 * v + 3));
-    }
-  for (std::size_t f = 0; f < lm.face_vertices.size(); ++f)
-    for (std::size_t c = 0; c < 3; ++c) {
-      int& u = lm.face_vertices[f][c];
-      u = std::size_t(u) < model_vertices ? first_id[std::size_t(u)] + corner_sector[3 * f + c]
-                                          : new_model_vertices + (u - int(model_vertices));
-    }
-  lm.vertex_handles = std::move(handles);
-  lm.vertex_indices = std::move(indices);
-  lm.xyz = std::move(xyz);
-  lm.number_of_model_vertices = std::size_t(new_model_vertices);
+  // 2. New vertices: sector 0 of a split vertex keeps its id, the others are new model
+  // vertices after the old ones (the model is canonical: vertex and edge ids do not change
+  // it); the vertices outside the model move up behind them.
+  std::vector<int> first_copy(split.size() + 1, int(model_vertices));
+  for (std::size_t i = 0; i < split.size(); ++i)
+    first_copy[i + 1] = first_copy[i] + sectors[i] - 1;
+  const int copies = first_copy.back() - int(model_vertices);
+  {
+    std::vector<typename Local_mesh<TriangleMesh>::vertex_descriptor> handles;
+    std::vector<std::size_t> indices;
+    std::vector<double> xyz;
+    for (std::size_t i = 0; i < split.size(); ++i)
+      for (int s = 1; s < sectors[i]; ++s) {
+        const std::size_t v = std::size_t(split[i]);
+        handles.push_back(lm.vertex_handles[v]);
+        indices.push_back(lm.vertex_indices[v]);
+        xyz.insert(xyz.end(), lm.xyz.begin() + std::ptrdiff_t(3 * v),
+                   lm.xyz.begin() + std::ptrdiff_t(3 * v + 3));
+      }
+    const std::ptrdiff_t at = std::ptrdiff_t(model_vertices);
+    lm.vertex_handles.insert(lm.vertex_handles.begin() + at, handles.begin(), handles.end());
+    lm.vertex_indices.insert(lm.vertex_indices.begin() + at, indices.begin(), indices.end());
+    lm.xyz.insert(lm.xyz.begin() + 3 * at, xyz.begin(), xyz.end());
+  }
+  if (old_vertices > model_vertices)
+    for (std::array<int, 3>& face_corners : lm.face_vertices)
+      for (int& u : face_corners)
+        if (std::size_t(u) >= model_vertices)
+          u += copies;
+  lm.number_of_model_vertices = model_vertices + std::size_t(copies);
+  auto vertex_of = [&](const Corner& c) {
+    return c.sector == 0 ? split[c.split] : first_copy[c.split] + c.sector - 1;
+  };
 
-  // 3. The edges of the model faces, in the order the faces reach them, with the canonical
-  // direction of build_local_mesh(): an edge stays one edge where the ends of its two sides
-  // agree, and becomes two (one per side) along a crease. A table of two slots per old edge
-  // finds them (a hash of the end pairs missed the cache on every side of a large mesh).
-  std::vector<std::array<int, 2>> new_edges_of(lm.edge_halfedges.size(), {-1, -1});
-  lm.edge_halfedges.clear();
-  lm.edge_vertices.clear();
-  for (std::size_t f = 0; f < lm.number_of_model_faces; ++f) {
-    halfedge_descriptor h = halfedge(lm.face_handles[f], tm);
-    for (std::size_t j = 0; j < 3; ++j, h = next(h, tm)) {
-      int a = lm.face_vertices[f][j], b = lm.face_vertices[f][(j + 1) % 3];
-      std::array<int, 2>& slots = new_edges_of[std::size_t(lm.face_edges[f][j])];
-      int id = -1;
-      for (int& slot : slots) {
-        if (slot < 0) {
-          slot = int(lm.edge_halfedges.size());
-          halfedge_descriptor canonical = h;
-          if (against_canonical_direction(lm, a, b)) {
-            std::swap(a, b);
-            canonical = opposite(h, tm);
-          }
-          lm.edge_halfedges.push_back(canonical);
+  // 3. The edges of the model faces whose corners changed: an edge whose two sides now join
+  // different vertices (along a crease) becomes two, one per side, both with the old edge's
+  // canonical halfedge and direction (the copies of a vertex keep its point and index, which
+  // decide the direction).
+  std::vector<int> edges_to_redo;
+  for (const Corner& c : corners)
+    if (c.sector > 0) {
+      lm.face_vertices[std::size_t(c.face)][std::size_t(c.corner)] = vertex_of(c);
+      if (std::size_t(c.face) < lm.number_of_model_faces)
+        for (int e : lm.face_edges[std::size_t(c.face)])
+          edges_to_redo.push_back(e);
+    }
+  std::sort(edges_to_redo.begin(), edges_to_redo.end());
+  edges_to_redo.erase(std::unique(edges_to_redo.begin(), edges_to_redo.end()), edges_to_redo.end());
+  for (int e : edges_to_redo) {
+    const halfedge_descriptor h = lm.edge_halfedges[std::size_t(e)];
+    const std::size_t first_index =
+        lm.vertex_indices[std::size_t(lm.edge_vertices[std::size_t(e)][0])];
+    int id = -1; // the edge of the first side: e
+    std::array<int, 2> first_ends{-1, -1};
+    for (halfedge_descriptor side : {h, opposite(h, tm)}) {
+      const face_descriptor fd = face(side, tm);
+      if (fd == GT::null_face())
+        continue;
+      const int f = lm.face_ids.find(lm.face_index(fd));
+      if (f < 0 || std::size_t(f) >= lm.number_of_model_faces)
+        continue;
+      for (std::size_t j = 0; j < 3; ++j) {
+        if (lm.face_edges[std::size_t(f)][j] != e)
+          continue;
+        int a = lm.face_vertices[std::size_t(f)][j],
+            b = lm.face_vertices[std::size_t(f)][(j + 1) % 3];
+        if (lm.vertex_indices[std::size_t(a)] != first_index)
+          std::swap(a, b);
+        if (id < 0) {
+          id = e;
+          first_ends = {a, b};
+          lm.edge_vertices[std::size_t(e)] = first_ends;
+        } else if (first_ends != std::array<int, 2>{a, b}) {
+          lm.face_edges[std::size_t(f)][j] = int(lm.edge_halfedges.size());
+          lm.edge_halfedges.push_back(h);
           lm.edge_vertices.push_back({a, b});
         }
-        const std::array<int, 2>& ends = lm.edge_vertices[std::size_t(slot)];
-        if ((ends[0] == a && ends[1] == b) || (ends[0] == b && ends[1] == a)) {
-          id = slot;
-          break;
-        }
       }
-      lm.face_edges[f][j] = id; // an edge has two sides on a triangle mesh: id >= 0
     }
   }
 
-  // 4. The faces of each model vertex's sector, for the exact evaluations.
-  lm.sector_face_begin.assign(std::size_t(new_model_vertices) + 1, 0);
-  for (const std::array<int, 3>& corners : lm.face_vertices)
-    for (int u : corners)
-      if (u < new_model_vertices)
-        ++lm.sector_face_begin[std::size_t(u) + 1];
-  for (std::size_t u = 0; u < std::size_t(new_model_vertices); ++u)
-    lm.sector_face_begin[u + 1] += lm.sector_face_begin[u];
-  lm.sector_faces.assign(std::size_t(lm.sector_face_begin.back()), 0);
-  std::vector<int> next_slot(lm.sector_face_begin.begin(), lm.sector_face_begin.end() - 1);
-  for (std::size_t f = 0; f < lm.face_vertices.size(); ++f)
-    for (int u : lm.face_vertices[f])
-      if (u < new_model_vertices)
-        lm.sector_faces[std::size_t(next_slot[std::size_t(u)]++)] = int(f);
+  // 4. The faces of each split vertex's sectors, for the exact evaluations.
+  std::vector<std::pair<int, int>> vertex_faces; // (vertex, face)
+  for (const Corner& c : corners)
+    vertex_faces.push_back({vertex_of(c), c.face});
+  std::sort(vertex_faces.begin(), vertex_faces.end());
+  lm.sector_vertices.clear();
+  lm.sector_face_begin.assign(1, 0);
+  lm.sector_faces.clear();
+  for (const auto& [vertex, f] : vertex_faces) {
+    if (lm.sector_vertices.empty() || lm.sector_vertices.back() != vertex) {
+      lm.sector_vertices.push_back(vertex);
+      lm.sector_face_begin.push_back(lm.sector_face_begin.back());
+    }
+    lm.sector_faces.push_back(f);
+    ++lm.sector_face_begin.back();
+  }
 }
 
 } // namespace internal
