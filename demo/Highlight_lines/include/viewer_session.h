@@ -660,10 +660,11 @@ private:
   {
     for (Vertex v : vertices(*mesh_))
       mesh_->point(v) = positions[std::size_t(v)];
-    if (crease_angle_) { // the creases may have changed with the positions
-      update_creases();
+    // The sweeper reads the creases when it is built: a new one only if they changed with the
+    // positions (the normals of its sectors follow the positions like the others).
+    if (crease_angle_ && update_creases())
       rebuild_sweeper();
-    } else
+    else
       sweeper_->update_positions();
     ++positions_revision_;
     update_normals();
@@ -714,19 +715,25 @@ private:
     return HLP::combine(HLP::level_range(levels_), HLP::facing_side_only(true));
   }
 
-  // The creases at the angle asked for, and a sweeper that cuts the mesh along them (it reads
-  // them when it is built); without an angle, the sweeper of the paper's model is kept.
-  void update_creases()
+  // The creases at the angle asked for (none without one); true if they changed.
+  bool update_creases()
   {
-    number_of_crease_edges_ = 0;
-    if (!crease_angle_)
-      return;
+    std::vector<Edge> before, after;
     for (Edge e : edges(*mesh_))
-      creases_[e] = false;
-    CGAL::Polygon_mesh_processing::detect_sharp_edges(*mesh_, *crease_angle_, creases_);
-    for (Edge e : edges(*mesh_))
-      number_of_crease_edges_ += creases_[e] ? 1 : 0;
+      if (creases_[e]) {
+        before.push_back(e);
+        creases_[e] = false;
+      }
+    if (crease_angle_) {
+      CGAL::Polygon_mesh_processing::detect_sharp_edges(*mesh_, *crease_angle_, creases_);
+      for (Edge e : edges(*mesh_))
+        if (creases_[e])
+          after.push_back(e);
+    }
+    number_of_crease_edges_ = after.size();
+    return before != after;
   }
+  // A sweeper that cuts the mesh along the creases if asked for, else the paper's.
   void rebuild_sweeper()
   {
     sweeper_.reset();

@@ -28,6 +28,23 @@ namespace CGAL {
 namespace Highlight_lines {
 namespace internal {
 
+// Room in the arrays of `lm`, before it is built on the whole of `tm`, for what
+// cut_at_creases() adds: at most two vertex copies and one edge per crease edge. Inserting them
+// then moves no array of a large mesh (a fresh copy of its coordinates costs more than the cut).
+template <typename TriangleMesh, typename CreaseMap>
+void reserve_room_for_cut(const TriangleMesh& tm, CreaseMap creases, Local_mesh<TriangleMesh>& lm)
+{
+  std::size_t crease_edges = 0;
+  for (auto e : edges(tm))
+    crease_edges += get(creases, e) ? 1 : 0;
+  const std::size_t vertices = num_vertices(tm) + 2 * crease_edges;
+  lm.vertex_handles.reserve(vertices);
+  lm.vertex_indices.reserve(vertices);
+  lm.xyz.reserve(3 * vertices);
+  lm.edge_halfedges.reserve(num_edges(tm) + crease_edges);
+  lm.edge_vertices.reserve(num_edges(tm) + crease_edges);
+}
+
 // Cuts `lm` along the edges e with get(creases, e) == true: each model vertex gets one local
 // vertex per sector (the faces around it between two crease edges or mesh borders), an edge
 // along a crease gets one per side, and lm.sector_faces lists the faces of each vertex with
@@ -174,7 +191,7 @@ void cut_at_creases(const TriangleMesh& tm, CreaseMap creases, Local_mesh<Triang
     const halfedge_descriptor h = lm.edge_halfedges[std::size_t(e)];
     const std::size_t first_index =
         lm.vertex_indices[std::size_t(lm.edge_vertices[std::size_t(e)][0])];
-    int id = -1; // the edge of the first side: e
+    bool first_side = true; // it keeps the old edge
     std::array<int, 2> first_ends{-1, -1};
     for (halfedge_descriptor side : {h, opposite(h, tm)}) {
       const face_descriptor fd = face(side, tm);
@@ -190,8 +207,8 @@ void cut_at_creases(const TriangleMesh& tm, CreaseMap creases, Local_mesh<Triang
             b = lm.face_vertices[std::size_t(f)][(j + 1) % 3];
         if (lm.vertex_indices[std::size_t(a)] != first_index)
           std::swap(a, b);
-        if (id < 0) {
-          id = e;
+        if (first_side) {
+          first_side = false;
           first_ends = {a, b};
           lm.edge_vertices[std::size_t(e)] = first_ends;
         } else if (first_ends != std::array<int, 2>{a, b}) {

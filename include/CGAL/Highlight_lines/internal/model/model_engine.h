@@ -84,21 +84,8 @@ public:
     constexpr bool whole_mesh =
         is_default_parameter<NamedParameters, internal_np::face_range_t>::value;
     if constexpr (whole_mesh &&
-                  !is_default_parameter<NamedParameters, internal_np::crease_edge_map_t>::value) {
-      // The cut adds copies of crease vertices (at most twice the crease edges) and a
-      // second edge per crease edge: room for them now, so that they do not move the arrays
-      // of a large mesh (a fresh copy of its coordinates costs more than the cut).
-      const auto creases = get_parameter(np, internal_np::crease_edge_map);
-      std::size_t crease_edges = 0;
-      for (auto e : edges(tm))
-        crease_edges += get(creases, e) ? 1 : 0;
-      const std::size_t vertices = num_vertices(tm) + 2 * crease_edges;
-      mesh_.vertex_handles.reserve(vertices);
-      mesh_.vertex_indices.reserve(vertices);
-      mesh_.xyz.reserve(3 * vertices);
-      mesh_.edge_halfedges.reserve(num_edges(tm) + crease_edges);
-      mesh_.edge_vertices.reserve(num_edges(tm) + crease_edges);
-    }
+                  !is_default_parameter<NamedParameters, internal_np::crease_edge_map_t>::value)
+      reserve_room_for_cut(tm, get_parameter(np, internal_np::crease_edge_map), mesh_);
     if constexpr (whole_mesh)
       build_local_mesh(tm, faces(tm), true, vpm_, vim, fim, him, mesh_);
     else
