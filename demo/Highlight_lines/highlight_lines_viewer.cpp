@@ -51,8 +51,7 @@ const char* usage =
     "--crease-angle DEG cuts the model along the creases: the edges whose faces' normals\n"
     "differ by more than DEG degrees (Polygon_mesh_processing::detect_sharp_edges()), so that\n"
     "the lines of a CAD part run straight on its flat faces and end at its creases (key c\n"
-    "toggles it, at 45 degrees unless given; the shading and the zebra keep one normal per\n"
-    "vertex).\n"
+    "toggles it, at 45 degrees unless given; the shading and the zebra are cut there too).\n"
     "\n"
     "--script FILE runs these actions, one per line and one per frame (# starts a comment):\n"
     "  load PATH                  read a mesh\n"
@@ -181,11 +180,12 @@ struct Camera
 
 // The session's geometry as flat float arrays for glDrawElements, rebuilt when it changes: the
 // positions and normals only when the mesh moves (not when the lights do), the stripes only
-// while the zebra is shown.
+// while the zebra is shown. The surface is drawn on the session's shading points (the vertices,
+// or the mesh cut along the creases).
 struct Draw_arrays
 {
   std::size_t revision = std::size_t(-1), mesh_generation = std::size_t(-1),
-              positions_revision = std::size_t(-1);
+              positions_revision = std::size_t(-1), shading_generation = std::size_t(-1);
   std::vector<float> positions, normals, stripes;
   std::vector<unsigned int> triangles, region_triangles;
   std::vector<std::vector<unsigned int>> detected_triangles;
@@ -200,14 +200,16 @@ struct Draw_arrays
       return;
     revision = s.revision();
     const Mesh& mesh = s.mesh();
-    if (positions_revision != s.positions_revision() || mesh_generation != s.mesh_generation()) {
+    const bool new_shading_points =
+        mesh_generation != s.mesh_generation() || shading_generation != s.shading_generation();
+    if (positions_revision != s.positions_revision() || new_shading_points) {
       positions_revision = s.positions_revision();
       positions.clear();
-      for (Vertex v : vertices(mesh)) {
-        const Point& p = mesh.point(v);
+      for (std::size_t i = 0; i < s.number_of_shading_points(); ++i) {
+        const Point& p = mesh.point(s.shading_origin(i));
         positions.insert(positions.end(), {float(p.x()), float(p.y()), float(p.z())});
       }
-      normals.assign(s.vertex_normals().begin(), s.vertex_normals().end());
+      normals.assign(s.shading_normals().begin(), s.shading_normals().end());
     }
     stripes.clear();
     if (!s.distances().empty()) {
@@ -218,11 +220,12 @@ struct Draw_arrays
         stripes.push_back(std::isfinite(d) ? float(std::fmod(d / spacing + 0.25, 64.0)) : 0.75f);
     }
     auto face_corners = [&](Face f, std::vector<unsigned int>& out) {
-      for (Vertex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
-        out.push_back((unsigned int)(v));
+      for (Mesh::Halfedge_index h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh))
+        out.push_back((unsigned int)(s.shading_point(h)));
     };
-    if (mesh_generation != s.mesh_generation()) {
+    if (new_shading_points) {
       mesh_generation = s.mesh_generation();
+      shading_generation = s.shading_generation();
       triangles.clear();
       for (Face f : faces(mesh))
         face_corners(f, triangles);

@@ -148,12 +148,19 @@ double grey_deviation(const Picture& p)
   return std::sqrt(std::max(squares / double(n) - mean * mean, 0.0));
 }
 
-double fraction_of_pixels_changed(const Picture& a, const Picture& b)
+// Over the columns from `first_column` on (the panel lies to their left).
+double fraction_of_pixels_changed(const Picture& a, const Picture& b, std::size_t first_column = 0)
 {
-  std::size_t changed = 0;
-  for (std::size_t i = 0; i + 2 < a.rgb.size(); i += 3)
-    changed += a.rgb[i] != b.rgb[i] || a.rgb[i + 1] != b.rgb[i + 1] || a.rgb[i + 2] != b.rgb[i + 2];
-  return double(changed) / double(a.rgb.size() / 3);
+  std::size_t changed = 0, compared = 0;
+  const std::size_t width = std::size_t(a.width), height = std::size_t(a.height);
+  for (std::size_t row = 0; row < height; ++row)
+    for (std::size_t column = first_column; column < width; ++column) {
+      const std::size_t i = 3 * (row * width + column);
+      changed +=
+          a.rgb[i] != b.rgb[i] || a.rgb[i + 1] != b.rgb[i + 1] || a.rgb[i + 2] != b.rgb[i + 2];
+      ++compared;
+    }
+  return compared > 0 ? double(changed) / double(compared) : 0.;
 }
 
 // ---- Files written by the viewer ---------------------------------------------------------------
@@ -243,10 +250,11 @@ int main(int argc, char** argv)
   }
 
   // Screenshots.
-  Picture before_sweep, after_sweep, zebra;
+  Picture before_sweep, after_sweep, zebra, shaded, shaded_creases;
   const bool read = read_png(dir + "/sweep_0.png", before_sweep) &&
                     read_png(dir + "/sweep_1.png", after_sweep) &&
-                    read_png(dir + "/zebra.png", zebra);
+                    read_png(dir + "/zebra.png", zebra) && read_png(dir + "/shaded.png", shaded) &&
+                    read_png(dir + "/shaded_creases.png", shaded_creases);
   expect(read, "the screenshots are PNG files of 8-bit RGB");
   if (read) {
     expect(before_sweep.width == 800 && before_sweep.height == 600,
@@ -262,6 +270,13 @@ int main(int argc, char** argv)
     const double changed = fraction_of_pixels_changed(before_sweep, after_sweep);
     expect(changed > 0.005, "the lines moved on screen: " + std::to_string(100 * changed) +
                                 " % of the pixels changed with the sweep");
+    // Without lines, only the shading can tell the two apart: cut along the creases, it turns
+    // sharply there (one normal per sector of faces), elsewhere it is the same. Right of the
+    // panel (which shows the crease angle).
+    const double cut = fraction_of_pixels_changed(shaded, shaded_creases, 400);
+    expect(cut > 0.002 && cut < 0.5,
+           "the shading is cut along the creases: " + std::to_string(100 * cut) +
+               " % of the pixels right of the panel changed");
   }
 
   // Lines before and after the sweep.

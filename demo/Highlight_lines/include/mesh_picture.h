@@ -38,19 +38,28 @@ void mesh_arrays(const CGAL::Surface_mesh<Point>& mesh,
   }
 }
 
-// The same, with the mesh cut along the edges e with get(creases, e): a vertex gets one point
-// per sector of faces between crease edges, so that smooth shading does not round the creases.
+// The mesh cut along the edges e with get(creases, e): a vertex gets one point per sector of
+// faces between crease edges (one for a vertex on no crease), so that smooth shading does not
+// round the creases. The first num_vertices(mesh) points are the vertices, in order; the others
+// are the copies of the vertices on creases.
+struct Cut_corners
+{
+  std::vector<std::size_t> point_of_corner; // by halfedge h: the point of target(h) in face(h)
+  std::vector<std::size_t> origin;          // by point: its vertex
+};
+
 template <typename Point, typename CreaseMap>
-void mesh_arrays(const CGAL::Surface_mesh<Point>& mesh, CreaseMap creases,
-                 std::vector<highlight_picture::Point3>& points,
-                 std::vector<std::array<std::size_t, 3>>& triangles)
+Cut_corners cut_corners(const CGAL::Surface_mesh<Point>& mesh, CreaseMap creases)
 {
   typedef CGAL::Surface_mesh<Point> Mesh;
-  mesh_arrays(mesh, points, triangles);
-  // Per halfedge h: the point of target(h) in the face of h.
-  std::vector<std::size_t> corner_point(mesh.number_of_halfedges(), 0);
+  Cut_corners cut;
+  cut.point_of_corner.assign(mesh.number_of_halfedges(), 0);
+  cut.origin.resize(mesh.number_of_vertices());
+  for (std::size_t i = 0; i < cut.origin.size(); ++i)
+    cut.origin[i] = i;
+  std::vector<typename Mesh::Halfedge_index> ring;
   for (auto v : vertices(mesh)) {
-    std::vector<typename Mesh::Halfedge_index> ring;
+    ring.clear();
     for (auto h : CGAL::halfedges_around_target(mesh.halfedge(v), mesh))
       ring.push_back(h);
     // Start after a crease or a border, so that a sector is never split by the wrap-around.
@@ -66,21 +75,37 @@ void mesh_arrays(const CGAL::Surface_mesh<Point>& mesh, CreaseMap creases,
       const auto h = ring[(start + k) % ring.size()];
       if (mesh.is_border(h))
         continue;
-      corner_point[std::size_t(h)] = point;
+      cut.point_of_corner[std::size_t(h)] = point;
       used = true;
-      if (get(creases, mesh.edge(mesh.next(h))) && used && k + 1 < ring.size()) {
-        points.push_back(points[std::size_t(v)]);
-        point = points.size() - 1;
+      if (get(creases, mesh.edge(mesh.next(h))) && k + 1 < ring.size()) {
+        cut.origin.push_back(std::size_t(v));
+        point = cut.origin.size() - 1;
         used = false;
       }
     }
+    if (!used && point + 1 == cut.origin.size() && point >= mesh.number_of_vertices())
+      cut.origin.pop_back(); // a copy opened after the last face of the ring: no face uses it
   }
+  return cut;
+}
+
+// mesh_arrays(), with the mesh cut along the edges e with get(creases, e) (cut_corners()).
+template <typename Point, typename CreaseMap>
+void mesh_arrays(const CGAL::Surface_mesh<Point>& mesh, CreaseMap creases,
+                 std::vector<highlight_picture::Point3>& points,
+                 std::vector<std::array<std::size_t, 3>>& triangles)
+{
+  const Cut_corners cut = cut_corners(mesh, creases);
+  points.clear();
+  for (std::size_t v : cut.origin)
+    points.push_back(to_array(mesh.point(typename CGAL::Surface_mesh<Point>::Vertex_index(
+        typename CGAL::Surface_mesh<Point>::size_type(v)))));
   triangles.clear();
   for (auto f : faces(mesh)) {
     std::array<std::size_t, 3> t{};
     std::size_t j = 0;
     for (auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh))
-      t[j++] = corner_point[std::size_t(mesh.prev(h))];
+      t[j++] = cut.point_of_corner[std::size_t(mesh.prev(h))];
     triangles.push_back(t);
   }
 }

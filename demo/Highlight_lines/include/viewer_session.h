@@ -17,6 +17,7 @@
 #include <CGAL/Highlight_lines/internal/vector3.h>
 
 #include "mesh_io.h"
+#include "mesh_picture.h"
 
 #include <algorithm>
 #include <array>
@@ -43,6 +44,7 @@ typedef CGAL::Surface_mesh<Point> Mesh;
 typedef Mesh::Face_index Face;
 typedef Mesh::Vertex_index Vertex;
 typedef Mesh::Edge_index Edge;
+typedef Mesh::Halfedge_index Halfedge;
 namespace HL = CGAL::Highlight_lines;
 namespace HLP = CGAL::Highlight_lines::parameters;
 typedef HL::Light_setup<K> Lights;
@@ -297,11 +299,12 @@ public:
     history_.assign(1, positions());
     history_index_ = 0;
     compute_bounding_box();
-    update_normals();
+    cut_ = mesh_picture::Cut_corners();
     if (crease_angle_) { // as asked for before this mesh
       update_creases();
       rebuild_sweeper();
     }
+    update_normals();
     update_lines();
     return true;
   }
@@ -317,8 +320,35 @@ public:
   const std::array<double, 3>& box_center() const { return box_center_; }
   double box_diagonal() const { return box_diagonal_; }
   // Area-weighted vertex normals (the sum of the incident faces' cross products, eq. 3 of the
-  // paper, as the sweeper computes them), unit length, 3 per vertex: shading and the zebra.
+  // paper, as the sweeper computes them), unit length, 3 per vertex.
   const std::vector<double>& vertex_normals() const { return normals_; }
+
+  // What the shading and the zebra are drawn on: one point per vertex, or, while the model is
+  // cut along the creases, one per sector of faces between crease edges (the mesh cut as the
+  // model is), so that the creases look sharp. The first points are the vertices, in order.
+  std::size_t number_of_shading_points() const
+  {
+    return cut_.origin.empty() ? num_vertices(*mesh_) : cut_.origin.size();
+  }
+  // The vertex of a shading point.
+  Vertex shading_origin(std::size_t point) const
+  {
+    return Vertex(Mesh::size_type(cut_.origin.empty() ? point : cut_.origin[point]));
+  }
+  // The shading point of target(h) in face(h).
+  std::size_t shading_point(Halfedge h) const
+  {
+    return cut_.origin.empty() ? std::size_t(mesh_->target(h))
+                               : cut_.point_of_corner[std::size_t(h)];
+  }
+  // Unit normals, 3 per shading point: the vertex normals, or the area-weighted normals of the
+  // sectors.
+  const std::vector<double>& shading_normals() const
+  {
+    return cut_.origin.empty() ? normals_ : sector_normals_;
+  }
+  // Changes whenever the shading points change (not their positions).
+  std::size_t shading_generation() const { return shading_generation_; }
 
   // ---- The lights and their highlight lines ---------------------------------------------------
 
@@ -364,8 +394,8 @@ public:
   // `degrees` (Polygon_mesh_processing::detect_sharp_edges(), found again whenever the mesh
   // moves), so that the lines of a CAD part run straight on its flat faces and end at its
   // creases (the library's crease_edge_map); none: the paper's model, one normal per vertex.
-  // The shading and the zebra keep one normal per vertex. False (nothing changed, the reason in
-  // `error`) for an angle outside (0, 180).
+  // The shading and the zebra are cut the same way (shading_normals()). False (nothing
+  // changed, the reason in `error`) for an angle outside (0, 180).
   bool set_crease_angle(std::optional<double> degrees, std::string& error)
   {
     if (degrees && !(*degrees > 0 && *degrees < 180)) {
@@ -381,6 +411,7 @@ public:
       return true;
     update_creases();
     rebuild_sweeper();
+    update_normals();
     update_lines();
     return true;
   }
@@ -405,7 +436,7 @@ public:
   const std::pair<long long, long long>& levels() const { return levels_; }
   // Time of the latest light or mesh change to new lines ready for drawing, in milliseconds.
   double update_milliseconds() const { return update_milliseconds_; }
-  // The highlight distance value d (eq. 1) of each vertex, for the zebra shading; NaN where the
+  // The highlight distance value d (eq. 1) of each shading point, for the zebra; NaN where the
   // normal is parallel to the light plane or, the lines being those of the facing side only,
   // turned away from it.
   // Empty unless asked for with show_distance_field(true).
@@ -700,12 +731,28 @@ private:
         for (int k = 0; k < 3; ++k)
           normals_[3 * std::size_t(v) + std::size_t(k)] += n[k];
     }
-    for (std::size_t v = 0; v < normals_.size(); v += 3) {
-      const double length =
-          std::sqrt(normals_[v] * normals_[v] + normals_[v + 1] * normals_[v + 1] +
-                    normals_[v + 2] * normals_[v + 2]);
+    normalize_triples(normals_);
+    sector_normals_.clear();
+    if (cut_.origin.empty())
+      return;
+    sector_normals_.assign(3 * cut_.origin.size(), 0.0);
+    for (Face f : faces(*mesh_)) {
+      const auto h = mesh_->halfedge(f);
+      const Vertex a = mesh_->source(h), b = mesh_->target(h), c = mesh_->target(mesh_->next(h));
+      const Vector n =
+          CGAL::cross_product(mesh_->point(b) - mesh_->point(a), mesh_->point(c) - mesh_->point(a));
+      for (Halfedge corner : CGAL::halfedges_around_face(h, *mesh_))
+        for (int k = 0; k < 3; ++k)
+          sector_normals_[3 * cut_.point_of_corner[std::size_t(corner)] + std::size_t(k)] += n[k];
+    }
+    normalize_triples(sector_normals_);
+  }
+  static void normalize_triples(std::vector<double>& v)
+  {
+    for (std::size_t i = 0; i < v.size(); i += 3) {
+      const double length = std::sqrt(v[i] * v[i] + v[i + 1] * v[i + 1] + v[i + 2] * v[i + 2]);
       for (std::size_t k = 0; k < 3; ++k)
-        normals_[v + k] = length > 0 ? normals_[v + k] / length : 0;
+        v[i + k] = length > 0 ? v[i + k] / length : 0;
     }
   }
 
@@ -731,7 +778,13 @@ private:
           after.push_back(e);
     }
     number_of_crease_edges_ = after.size();
-    return before != after;
+    const bool changed = before != after;
+    if (changed || crease_angle_.has_value() == cut_.origin.empty()) {
+      cut_ =
+          crease_angle_ ? mesh_picture::cut_corners(*mesh_, creases_) : mesh_picture::Cut_corners();
+      ++shading_generation_;
+    }
+    return changed;
   }
   // A sweeper that cuts the mesh along the creases if asked for, else the paper's.
   void rebuild_sweeper()
@@ -788,17 +841,18 @@ private:
   }
 
   // d = ((P - A0) x H)·N / (Z·N) (eq. 1) of vertex i, on the side facing the lights; NaN elsewhere.
-  double distance(std::size_t i) const { return distance(i, *lights_); }
   double distance(std::size_t i, const Lights& lights) const
+  {
+    return distance(mesh_->point(Vertex(Mesh::size_type(i))), &normals_[3 * i], lights);
+  }
+  double distance(const Point& p, const double* n, const Lights& lights) const
   {
     const std::array<double, 3>& a = lights.base_point_array();
     const std::array<double, 3>& h = lights.light_direction_array();
     const std::array<double, 3>& z = lights.plane_normal_array();
-    const double* n = &normals_[3 * i];
     const double zn = z[0] * n[0] + z[1] * n[1] + z[2] * n[2];
     if (!(zn > 1e-12))
       return std::numeric_limits<double>::quiet_NaN();
-    const Point& p = mesh_->point(Vertex(Mesh::size_type(i)));
     const double w[3] = {p.x() - a[0], p.y() - a[1], p.z() - a[2]};
     const double wxh[3] = {w[1] * h[2] - w[2] * h[1], w[2] * h[0] - w[0] * h[2],
                            w[0] * h[1] - w[1] * h[0]};
@@ -807,9 +861,10 @@ private:
 
   void update_distances()
   {
-    distances_.resize(num_vertices(*mesh_));
+    const std::vector<double>& normals = shading_normals();
+    distances_.resize(number_of_shading_points());
     for (std::size_t i = 0; i < distances_.size(); ++i)
-      distances_[i] = distance(i);
+      distances_[i] = distance(mesh_->point(shading_origin(i)), &normals[3 * i], *lights_);
   }
 
   // The lights whose lines a light tunnel shows: those between the 5 % and 95 % quantiles of d (as
@@ -887,6 +942,11 @@ private:
   std::array<double, 3> box_center_{};
   double box_diagonal_ = 1;
   std::vector<double> normals_, distances_;
+  // The shading points of the mesh cut along the creases (empty without creases), and their
+  // normals.
+  mesh_picture::Cut_corners cut_;
+  std::vector<double> sector_normals_;
+  std::size_t shading_generation_ = 0;
   bool distance_field_wanted_ = false;
   // The crease edges of the cut model, if one is asked for.
   Mesh::Property_map<Edge, bool> creases_;
