@@ -335,7 +335,7 @@ private:
       std::vector<Vec3> normals;
       const Frozen_curvature_variation frozen = freeze_variation(normals);
       return add_curvature_variation_quadratic(frozen, points, normals, region_.variable,
-                                               directions, add_P, add_q);
+                                               directions, add_P, add_q, variation_workspace_);
     }
     return add_willmore_quadratic(
         freeze_willmore_weights(points, engine_.local_mesh().face_vertices,
@@ -862,6 +862,7 @@ private:
   std::vector<double> applied_;                // the last step taken
   std::vector<char> free_steps_; // per step taken: the program's minimiser, see take_step()
   std::vector<double> last_program_step_; // the last solution inside the trust region, as solved
+  Curvature_variation_workspace variation_workspace_; // reused by each program's assembly
   // The slow tail's differences of successive solutions and steps, see accelerate_tail().
   static constexpr std::size_t tail_memory = 5;
   std::vector<Eigen::VectorXd> tail_solution_differences_, tail_step_differences_;
