@@ -248,6 +248,25 @@ std::vector<Face> region_around(const Mesh& mesh, Vertex v, int rings)
   return std::vector<Face>(region.begin(), region.end());
 }
 
+// What any model must hold: finite nodes and polyline points, lines made of existing nodes.
+// `what` names the call in the bug report.
+template <typename Model>
+void check_model_output(const Model& model, const std::vector<std::vector<Point>>& polylines,
+                        const std::string& what)
+{
+  for (const auto& node : model.nodes())
+    if (!finite(node.point))
+      bug(("non-finite highlight node (" + what + ")").c_str());
+  for (const auto& line : model.lines())
+    for (std::size_t id : line.nodes)
+      if (id >= model.nodes().size())
+        bug(("line refers to a node that does not exist (" + what + ")").c_str());
+  for (const auto& polyline : polylines)
+    for (const Point& p : polyline)
+      if (!finite(p))
+        bug(("non-finite polyline point (" + what + ")").c_str());
+}
+
 // Returns whether the model was computed (the mesh passed its checks).
 bool check_model(const Mesh& mesh, const HL::Light_setup<K>& lights)
 {
@@ -256,17 +275,7 @@ bool check_model(const Mesh& mesh, const HL::Light_setup<K>& lights)
   std::vector<std::vector<Point>> polylines;
   try {
     const auto model = CGAL::compute_highlight_lines(mesh, lights, std::back_inserter(polylines));
-    for (const auto& node : model.nodes())
-      if (!finite(node.point))
-        bug("non-finite highlight node");
-    for (const auto& line : model.lines())
-      for (std::size_t id : line.nodes)
-        if (id >= model.nodes().size())
-          bug("line refers to a node that does not exist");
-    for (const auto& polyline : polylines)
-      for (const Point& p : polyline)
-        if (!finite(p))
-          bug("non-finite polyline point");
+    check_model_output(model, polylines, "compute_highlight_lines");
     count(model.lines().empty() ? "model: no line" : "model: lines");
     computed = true;
   } catch (const HL::Invalid_input&) {
@@ -290,13 +299,7 @@ void check_model_with_creases(const Mesh& mesh, const HL::Light_setup<K>& lights
     std::vector<std::vector<Point>> polylines;
     const auto model = CGAL::compute_highlight_lines(mesh, lights, std::back_inserter(polylines),
                                                      HL::parameters::crease_edge_map(creases));
-    for (const auto& node : model.nodes())
-      if (!finite(node.point))
-        bug("non-finite highlight node (creases)");
-    for (const auto& line : model.lines())
-      for (std::size_t id : line.nodes)
-        if (id >= model.nodes().size())
-          bug("line refers to a node that does not exist (creases)");
+    check_model_output(model, polylines, "compute_highlight_lines with creases");
     count(model.lines().empty() ? "creases: no line" : "creases: lines");
   } catch (const HL::Invalid_input&) {
     count("creases: Invalid_input");
