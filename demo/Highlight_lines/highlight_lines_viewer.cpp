@@ -179,9 +179,9 @@ struct Camera
 // ---- Drawing ----------------------------------------------------------------------------------
 
 // The session's geometry as flat float arrays for glDrawElements, rebuilt when it changes: the
-// positions and normals only when the mesh moves (not when the lights do), the stripes only
-// while the zebra is shown. The surface is drawn on the session's shading points (the vertices,
-// or the mesh cut along the creases).
+// positions and normals only when the mesh moves or its shading points change (not when the
+// lights do), the stripes only while the zebra is shown. The surface is drawn on the session's
+// shading points (the vertices, or the mesh cut along the creases).
 struct Draw_arrays
 {
   std::size_t revision = std::size_t(-1), mesh_generation = std::size_t(-1),

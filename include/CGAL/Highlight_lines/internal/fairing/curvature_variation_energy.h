@@ -472,16 +472,6 @@ inline double curvature_variation_value(const Frozen_curvature_variation& frozen
   return value;
 }
 
-// The quadratic of E in x, to a sink: add_P(v, w, value) with v <= w, once per entry of the
-// upper triangle, add_q(v, value); returns E(0). `normals`: the unit normal N_m of each frozen
-// row m (same order as frozen.weights.energy_vertices). H_m = Σ_k w_mk (P_m - P_k) · N_m with
-// the frozen stencil w (the cotangent weights or the fit's) and N_m frozen, so
-// H = B x + H⁰ with B_mv = s (d_v · N_m), s = Σ_k w_mk if v = m, -w_mv if v is in the stencil. With
-// L = Σ_edges ℓ² c_ij (e_i - e_j)(e_i - e_j)ᵀ + Σ_{i in R} μ A_i e_i e_iᵀ, the weighted Laplacian
-// of the edges plus the mean curvature term on its diagonal, E = (B x + H⁰)ᵀ
-// L (B x + H⁰): the matrix is 2 Bᵀ (L B), built row by row with a dense accumulator, which costs a
-// third of the flops of summing each edge's outer product and hands the sink one value per entry
-// instead of about ten.
 // The arrays of add_curvature_variation_quadratic(), kept by a caller that assembles one program
 // per iteration: on a region of 10^5 vertices, growing and first touching fresh ones took half
 // of the assembly's time.
@@ -492,13 +482,36 @@ struct Curvature_variation_workspace
     int i, j;
     double weight;
   };
-  std::vector<int> b_start, b_variable, l_start, next, lb_start, lb_variable, bt_start, touched;
-  std::vector<double> b_value, degree, lb_value, LH, accumulated;
+  // Sparse rows: row m's (index, value) pairs at [start[m], start[m + 1]).
+  struct Sparse_rows
+  {
+    std::vector<int> start, index;
+    std::vector<double> value;
+    void reset(std::size_t rows)
+    {
+      start.assign(rows + 1, 0);
+      index.clear();
+      value.clear();
+    }
+  };
+  Sparse_rows B, LB;
+  std::vector<int> l_start, next, bt_start, touched;
+  std::vector<double> degree, LH, accumulated;
   std::vector<Edge> edges;
   std::vector<std::pair<int, double>> l_entries, bt_entries;
   std::vector<char> held;
 };
 
+// The quadratic of E in x, to a sink: add_P(v, w, value) with v <= w, once per entry of the
+// upper triangle, add_q(v, value); returns E(0). `normals`: the unit normal N_m of each frozen
+// row m (same order as frozen.weights.energy_vertices). H_m = Σ_k w_mk (P_m - P_k) · N_m with
+// the frozen stencil w (the cotangent weights or the fit's) and N_m frozen, so
+// H = B x + H⁰ with B_mv = s (d_v · N_m), s = Σ_k w_mk if v = m, -w_mv if v is in the stencil. With
+// L = Σ_edges ℓ² c_ij (e_i - e_j)(e_i - e_j)ᵀ + Σ_{i in R} μ A_i e_i e_iᵀ, the weighted Laplacian
+// of the edges plus the mean curvature term on its diagonal, E = (B x + H⁰)ᵀ
+// L (B x + H⁰): the matrix is 2 Bᵀ (L B), built row by row with a dense accumulator, which costs a
+// third of the flops of summing each edge's outer product and hands the sink one value per entry
+// instead of about ten.
 template <typename AddP, typename AddQ>
 double add_curvature_variation_quadratic(const Frozen_curvature_variation& frozen,
                                          const std::vector<std::array<double, 3>>& positions,
@@ -514,30 +527,26 @@ double add_curvature_variation_quadratic(const Frozen_curvature_variation& froze
   const std::size_t rows = w.energy_vertices.size();
   const int variables = int(directions.size());
 
-  // H⁰ and the rows of B (variable, value), row m at [b_start[m], b_start[m + 1]).
+  // H⁰ and the rows of B (variable, value), row m at [B.start[m], B.start[m + 1]).
   const std::vector<double> H = frozen_mean_curvatures(frozen, positions, normals);
-  std::vector<int>& b_start = work.b_start;
-  std::vector<int>& b_variable = work.b_variable;
-  std::vector<double>& b_value = work.b_value;
-  b_start.assign(rows + 1, 0);
-  b_variable.clear();
-  b_value.clear();
+  Curvature_variation_workspace::Sparse_rows& B = work.B;
+  B.reset(rows);
   for (std::size_t m = 0; m < rows; ++m) {
     double own = 0;
     for (const auto& n : frozen.stencil_of(m)) {
       own += n.weight;
       const int v = variable_of_vertex[std::size_t(n.vertex)];
       if (v >= 0) {
-        b_variable.push_back(v);
-        b_value.push_back(-n.weight * dot(directions[std::size_t(v)], normals[m]));
+        B.index.push_back(v);
+        B.value.push_back(-n.weight * dot(directions[std::size_t(v)], normals[m]));
       }
     }
     const int self = variable_of_vertex[std::size_t(w.energy_vertices[m])];
     if (self >= 0) {
-      b_variable.push_back(self);
-      b_value.push_back(own * dot(directions[std::size_t(self)], normals[m]));
+      B.index.push_back(self);
+      B.value.push_back(own * dot(directions[std::size_t(self)], normals[m]));
     }
-    b_start[m + 1] = int(b_variable.size());
+    B.start[m + 1] = int(B.index.size());
   }
 
   // The edges (each once) with their weights ℓ² c_ij and the terms μ A_i of R; L's diagonal;
@@ -593,18 +602,14 @@ double add_curvature_variation_quadratic(const Frozen_curvature_variation& froze
     accumulated[std::size_t(v)] += value;
   };
   auto add_row_of_B = [&](std::size_t m, double factor) {
-    for (int p = b_start[m]; p < b_start[m + 1]; ++p)
-      accumulate(b_variable[std::size_t(p)], factor * b_value[std::size_t(p)]);
+    for (int p = B.start[m]; p < B.start[m + 1]; ++p)
+      accumulate(B.index[std::size_t(p)], factor * B.value[std::size_t(p)]);
   };
 
   // The rows of L B (and of L H⁰), for the rows where B or L is not empty.
-  std::vector<int>& lb_start = work.lb_start;
-  std::vector<int>& lb_variable = work.lb_variable;
-  std::vector<double>& lb_value = work.lb_value;
+  Curvature_variation_workspace::Sparse_rows& LB = work.LB;
   std::vector<double>& LH = work.LH;
-  lb_start.assign(rows + 1, 0);
-  lb_variable.clear();
-  lb_value.clear();
+  LB.reset(rows);
   LH.assign(rows, 0.0);
   for (std::size_t m = 0; m < rows; ++m) {
     if (degree[m] > 0) {
@@ -617,30 +622,30 @@ double add_curvature_variation_quadratic(const Frozen_curvature_variation& froze
       }
     }
     for (int v : touched) {
-      lb_variable.push_back(v);
-      lb_value.push_back(accumulated[std::size_t(v)]);
+      LB.index.push_back(v);
+      LB.value.push_back(accumulated[std::size_t(v)]);
       accumulated[std::size_t(v)] = 0;
       held[std::size_t(v)] = 0;
     }
     touched.clear();
-    lb_start[m + 1] = int(lb_variable.size());
+    LB.start[m + 1] = int(LB.index.size());
   }
 
   // Bᵀ by variable: the rows m with B_mv ≠ 0.
   std::vector<int>& bt_start = work.bt_start;
   bt_start.assign(std::size_t(variables) + 1, 0);
-  for (int v : b_variable)
+  for (int v : B.index)
     ++bt_start[std::size_t(v) + 1];
   for (int v = 0; v < variables; ++v)
     bt_start[std::size_t(v) + 1] += bt_start[std::size_t(v)];
   std::vector<std::pair<int, double>>& bt_entries = work.bt_entries;
-  bt_entries.resize(b_variable.size());
+  bt_entries.resize(B.index.size());
   {
     next.assign(bt_start.begin(), bt_start.end() - 1);
     for (std::size_t m = 0; m < rows; ++m)
-      for (int p = b_start[m]; p < b_start[m + 1]; ++p)
-        bt_entries[std::size_t(next[std::size_t(b_variable[std::size_t(p)])]++)] = {
-            int(m), b_value[std::size_t(p)]};
+      for (int p = B.start[m]; p < B.start[m + 1]; ++p)
+        bt_entries[std::size_t(next[std::size_t(B.index[std::size_t(p)])]++)] = {
+            int(m), B.value[std::size_t(p)]};
   }
 
   // Row a of the matrix, 2 Σ_m B_ma (L B)_m, upper part; and q_a = 2 Σ_m B_ma (L H⁰)_m.
@@ -649,10 +654,10 @@ double add_curvature_variation_quadratic(const Frozen_curvature_variation& froze
     for (int p = bt_start[std::size_t(a)]; p < bt_start[std::size_t(a) + 1]; ++p) {
       const auto& [m, b] = bt_entries[std::size_t(p)];
       q += b * LH[std::size_t(m)];
-      for (int t = lb_start[std::size_t(m)]; t < lb_start[std::size_t(m) + 1]; ++t) {
-        const int v = lb_variable[std::size_t(t)];
+      for (int t = LB.start[std::size_t(m)]; t < LB.start[std::size_t(m) + 1]; ++t) {
+        const int v = LB.index[std::size_t(t)];
         if (v >= a)
-          accumulate(v, 2 * b * lb_value[std::size_t(t)]);
+          accumulate(v, 2 * b * LB.value[std::size_t(t)]);
       }
     }
     if (bt_start[std::size_t(a)] < bt_start[std::size_t(a) + 1])
@@ -667,6 +672,7 @@ double add_curvature_variation_quadratic(const Frozen_curvature_variation& froze
   return r0;
 }
 
+// The same with arrays of its own.
 template <typename AddP, typename AddQ>
 double add_curvature_variation_quadratic(const Frozen_curvature_variation& frozen,
                                          const std::vector<std::array<double, 3>>& positions,
