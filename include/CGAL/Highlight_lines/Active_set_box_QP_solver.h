@@ -7,9 +7,9 @@
 #include <CGAL/Highlight_lines/Box_QP_report.h>
 #include <CGAL/Highlight_lines/internal/qp/Box_QP_problem.h>
 #include <CGAL/Highlight_lines/internal/qp/Supernodal_LDLT.h>
+#include <CGAL/Highlight_lines/internal/qp/fill_reducing_ordering.h>
 
 #include <Eigen/Dense>
-#include <Eigen/OrderingMethods>
 #include <Eigen/Sparse>
 
 #include <algorithm>
@@ -43,7 +43,10 @@ variables. A problem of 2000 variables or more first looks for the active bounds
 gradient projection (Moré and Toraldo; a warm start is first checked by one projected step,
 and kept if that moves few variables); a cold start also takes primal active-set steps that
 activate the bounds in the order the step crosses them. The systems are solved with a
-supernodal \f$ LDL^T \f$ factorisation in a fill-reducing ordering, analysed once per sparsity
+supernodal \f$ LDL^T \f$ factorisation in a fill-reducing ordering (approximate minimum
+degree; where the program links `CGAL::METIS_support`, which defines `CGAL_METIS_ENABLED`,
+also nested dissection by METIS when minimum degree leaves a factorisation of more than 5000
+flops per entry of \f$ P \f$, and the ordering of fewer flops is kept), analysed once per sparsity
 pattern (reuse the solver object in an iterative method), and bordered by the changed
 variables while that is cheaper than a new factorisation. After `set_warm_start()`, the
 factorisation left by the previous `solve()` is reused before a new one is made: bordered if
@@ -360,13 +363,8 @@ private:
       ldlt_.analyze(n, analyzed_outer_.data(), analyzed_inner_.data(), analyzed_ordering_);
       analyzed = ldlt_.factorization_flops() <= 1.1 * last_flops;
     }
-    if (!analyzed) {
-      Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> permutation;
-      Eigen::internal::minimum_degree_ordering(pattern, permutation);
-      // AMD returns, for each elimination position, the variable eliminated there.
-      analyzed_ordering_.assign(permutation.indices().data(), permutation.indices().data() + n);
-      ldlt_.analyze(n, analyzed_outer_.data(), analyzed_inner_.data(), analyzed_ordering_);
-    }
+    if (!analyzed) // pattern's arrays are analyzed_outer_'s and analyzed_inner_'s
+      analyzed_ordering_ = internal::analyze_in_fill_reducing_ordering(ldlt_, pattern);
     is_analyzed(P, &analyzed_position_); // contained by construction: fills the positions
     // The factor of the last matrix is laid out for the old analysis: it can precondition
     // nothing any more.

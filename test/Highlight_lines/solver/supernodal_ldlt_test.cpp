@@ -3,12 +3,15 @@
 // finds null-space directions of semidefinite ones.
 
 #include <CGAL/Highlight_lines/internal/qp/Supernodal_LDLT.h>
+#include <CGAL/Highlight_lines/internal/qp/fill_reducing_ordering.h>
 
 #include <Eigen/SparseCholesky>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <functional>
+#include <iterator>
+#include <limits>
 #include <numeric>
 #include <random>
 #include <utility>
@@ -314,6 +317,106 @@ TEST(SupernodalLDLT, EmptyMatrixIsPositiveDefinite)
   A.makeCompressed();
   Supernodal_LDLT ldlt;
   EXPECT_EQ(factorize(ldlt, A, {}), Supernodal_LDLT::Inertia::POSITIVE_DEFINITE);
+}
+
+// A grid's 1-ring Laplacian raised to the power `rings` (its pattern couples the vertices within
+// `rings` edges) times its transpose, plus `shift` I: symmetric positive definite, the pattern of
+// a fairing program of 2 `rings` rings (a fairing couples vertices within three edges).
+Sparse_matrix grid_matrix(int side, int rings, double shift)
+{
+  const int n = side * side;
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int i = 0; i < side; ++i)
+    for (int j = 0; j < side; ++j) {
+      const int v = i * side + j;
+      entries.emplace_back(v, v, 4.5);
+      const int di[] = {-1, 1, 0, 0}, dj[] = {0, 0, -1, 1};
+      for (int k = 0; k < 4; ++k)
+        if (i + di[k] >= 0 && i + di[k] < side && j + dj[k] >= 0 && j + dj[k] < side)
+          entries.emplace_back(v, (i + di[k]) * side + j + dj[k], -1.);
+    }
+  Sparse_matrix L(n, n);
+  L.setFromTriplets(entries.begin(), entries.end());
+  Sparse_matrix power = L;
+  for (int r = 1; r < rings; ++r)
+    power = Sparse_matrix(power * L);
+  Sparse_matrix identity(n, n);
+  identity.setIdentity();
+  Sparse_matrix A = Sparse_matrix(power.transpose() * power) + shift * identity;
+  A.makeCompressed();
+  return A;
+}
+
+using CGAL::Highlight_lines::internal::fill_reducing_ordering;
+using CGAL::Highlight_lines::internal::Ordering_method;
+
+TEST(FillReducingOrdering, BothMethodsGivePermutationsThatSolve)
+{
+  const Sparse_matrix A = grid_matrix(40, 2, 0.01);
+  const int n = static_cast<int>(A.rows());
+  for (Ordering_method method :
+       {Ordering_method::MINIMUM_DEGREE, Ordering_method::NESTED_DISSECTION}) {
+    const std::vector<int> ordering = fill_reducing_ordering(A, method);
+    std::vector<int> sorted = ordering;
+    std::sort(sorted.begin(), sorted.end());
+    std::vector<int> identity(n);
+    std::iota(identity.begin(), identity.end(), 0);
+    ASSERT_EQ(sorted, identity);
+    Supernodal_LDLT ldlt;
+    ASSERT_EQ(factorize(ldlt, A, ordering), Supernodal_LDLT::Inertia::POSITIVE_DEFINITE);
+    const Eigen::VectorXd b = Eigen::VectorXd::Random(n);
+    Eigen::VectorXd x = b;
+    ldlt.solve(x);
+    EXPECT_LE((A * x - b).norm(), 1e-10 * b.norm());
+  }
+}
+
+// Nested dissection's separators beat minimum degree on large two-dimensional meshes
+// (George 1973), which is why the solver tries it there.
+TEST(FillReducingOrdering, NestedDissectionNeedsFewerFlopsOnALargeGrid)
+{
+  if (!CGAL::Highlight_lines::internal::has_nested_dissection())
+    GTEST_SKIP() << "METIS not linked (CGAL_METIS_ENABLED undefined)";
+  const Sparse_matrix A = grid_matrix(150, 1, 0.);
+  const int n = static_cast<int>(A.rows());
+  Supernodal_LDLT minimum_degree, nested_dissection;
+  minimum_degree.analyze(n, A.outerIndexPtr(), A.innerIndexPtr(),
+                         fill_reducing_ordering(A, Ordering_method::MINIMUM_DEGREE));
+  nested_dissection.analyze(n, A.outerIndexPtr(), A.innerIndexPtr(),
+                            fill_reducing_ordering(A, Ordering_method::NESTED_DISSECTION));
+  EXPECT_LT(nested_dissection.factorization_flops(), 0.9 * minimum_degree.factorization_flops());
+}
+
+// The solver's analysis: with a threshold of 0 flops per entry nested dissection is always
+// tried, and the analysis of fewer flops is kept; the returned ordering is the analysed one.
+TEST(FillReducingOrdering, TheAnalysisKeepsTheOrderingOfFewerFlops)
+{
+  using CGAL::Highlight_lines::internal::analyze_in_fill_reducing_ordering;
+  // Nested dissection wins on the large grid, minimum degree on the small wide one.
+  for (const Sparse_matrix& A : {grid_matrix(150, 1, 0.01), grid_matrix(60, 3, 0.01)}) {
+    const int n = static_cast<int>(A.rows());
+    double fewest = std::numeric_limits<double>::infinity();
+    for (Ordering_method method :
+         {Ordering_method::MINIMUM_DEGREE, Ordering_method::NESTED_DISSECTION}) {
+      Supernodal_LDLT single;
+      single.analyze(n, A.outerIndexPtr(), A.innerIndexPtr(), fill_reducing_ordering(A, method));
+      fewest = std::min(fewest, single.factorization_flops());
+    }
+    Supernodal_LDLT ldlt, check;
+    const std::vector<int> ordering = analyze_in_fill_reducing_ordering(ldlt, A, 0.);
+    EXPECT_EQ(ldlt.factorization_flops(), fewest);
+    check.analyze(n, A.outerIndexPtr(), A.innerIndexPtr(), ordering);
+    EXPECT_EQ(check.factorization_flops(), ldlt.factorization_flops());
+    ASSERT_EQ(ldlt.factorize(A.valuePtr(), 1e-12), Supernodal_LDLT::Inertia::POSITIVE_DEFINITE);
+    const Eigen::VectorXd b = Eigen::VectorXd::Random(n);
+    Eigen::VectorXd x = b;
+    ldlt.solve(x);
+    EXPECT_LE((A * x - b).norm(), 1e-10 * b.norm());
+    // The default threshold keeps minimum degree on matrices this small.
+    Supernodal_LDLT by_default;
+    EXPECT_EQ(analyze_in_fill_reducing_ordering(by_default, A),
+              fill_reducing_ordering(A, Ordering_method::MINIMUM_DEGREE));
+  }
 }
 
 } // namespace
