@@ -46,9 +46,9 @@ activate the bounds in the order the step crosses them. The systems are solved w
 supernodal \f$ LDL^T \f$ factorisation in a fill-reducing ordering (approximate minimum
 degree; where the program links `CGAL::METIS_support`, which defines `CGAL_METIS_ENABLED`,
 also nested dissection by METIS when minimum degree leaves a factorisation of more than 5000
-flops per entry of \f$ P \f$, and the ordering of fewer flops is kept), analysed once per sparsity
-pattern (reuse the solver object in an iterative method), and bordered by the changed
-variables while that is cheaper than a new factorisation. After `set_warm_start()`, the
+flops per entry of the pattern of \f$ P \f$, and the ordering of fewer flops is kept),
+analysed once per sparsity pattern (reuse the solver object in an iterative method), and bordered by
+the changed variables while that is cheaper than a new factorisation. After `set_warm_start()`, the
 factorisation left by the previous `solve()` is reused before a new one is made: bordered if
 \f$ P \f$ has not changed since (neither `resize()` nor `set_P()` was called: the same program
 solved again with other bounds, \f$ q \f$ or \f$ r \f$), else as the preconditioner of

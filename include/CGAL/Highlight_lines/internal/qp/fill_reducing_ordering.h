@@ -73,11 +73,11 @@ std::vector<int> fill_reducing_ordering(Sparse_matrix pattern, Ordering_method m
     METIS_SetDefaultOptions(options);
     std::vector<idx_t> permutation(static_cast<std::size_t>(n)),
         inverse(static_cast<std::size_t>(n));
-    // METIS_NodeND's perm is the variable at each position, as ours.
-    if (METIS_NodeND(&vertices, first.data(), neighbors.data(), nullptr, options,
-                     permutation.data(), inverse.data()) == METIS_OK)
+    // METIS_NodeND's perm is the variable at each position, as ours. It fails on a graph
+    // without edges (where any ordering does): minimum degree below, as on any failure.
+    if (!neighbors.empty() && METIS_NodeND(&vertices, first.data(), neighbors.data(), nullptr,
+                                           options, permutation.data(), inverse.data()) == METIS_OK)
       return std::vector<int>(permutation.begin(), permutation.end());
-    // Out of memory or another failure inside METIS: minimum degree below.
   }
 #else
   (void)method;
