@@ -243,6 +243,20 @@ public:
       factorization_flops_ += double(r) * k * k + double(r - k) * (r - k) * k;
     }
     L_.resize(panel_start_[supernodes]); // factorize() writes every panel before reading it
+    // The update matrices wait on a stack (children before their parent, in postorder): its
+    // largest extent, in entries.
+    std::size_t top = 0;
+    update_stack_size_ = 0;
+    for (int s = 0; s < supernodes; ++s) {
+      for (int c = child_start[s]; c < child_start[s + 1]; ++c) {
+        const std::size_t below =
+            std::size_t(struct_start_[child_list[c] + 1] - struct_start_[child_list[c]]);
+        top -= below * below;
+      }
+      const std::size_t below = std::size_t(struct_start_[s + 1] - struct_start_[s]);
+      top += below * below;
+      update_stack_size_ = std::max(update_stack_size_, top);
+    }
     solve_flops_ = 4. * double(panel_start_[supernodes]) + 4. * n;
   }
 
@@ -267,11 +281,16 @@ public:
       scale[j] = d > 0. ? d : (max_diagonal > 0. ? max_diagonal : 1.);
     }
 
-    // Update matrices of the supernodes waiting for their parent; in postorder the children
-    // of a supernode are on top of the stack when it is processed.
-    std::vector<Eigen::MatrixXd> updates;
+    // The update matrices of the supernodes waiting for their parent, one after the other on
+    // a stack kept from one factorisation to the next (in postorder the children of a
+    // supernode are on top of it when it is processed); the one being formed in update_work_.
+    // Fresh matrices for each supernode cost the first factorisation of a 10^5-variable
+    // fairing program a third of its time in page faults (2.11 -> 1.62 s, later ones 1.50 s).
+    update_stack_.resize(update_stack_size_);
+    update_work_.resize(std::size_t(max_below_) * std::size_t(max_below_));
+    std::vector<std::size_t> update_start;
     std::vector<int> updating_supernode;
-    Eigen::MatrixXd T, W;
+    Eigen::MatrixXd W;
     Eigen::VectorXd weights;
     for (int s = 0; s < supernodes; ++s) {
       const int first = super_first_[s], k = super_first_[s + 1] - first;
@@ -281,17 +300,19 @@ public:
       // becomes the update matrix. Entries of A lie in the first k columns only.
       Eigen::Map<Eigen::MatrixXd> F(L_.data() + panel_start_[s], r, k);
       F.setZero();
-      T.setZero(below, below);
+      Eigen::Map<Eigen::MatrixXd> T(update_work_.data(), below, below);
+      T.triangularView<Eigen::Lower>().setZero();
       double* f = F.data();
       double* t = T.data();
       for (int q = assembly_start_[s]; q < assembly_start_[s + 1]; ++q)
         f[assembly_position_[q]] += values[assembly_source_[q]];
       while (!updating_supernode.empty() && super_parent_[updating_supernode.back()] == s) {
-        const Eigen::MatrixXd& U = updates.back();
-        const int* rel = relative_.data() + struct_start_[updating_supernode.back()];
-        const int size = static_cast<int>(U.rows());
+        const int child = updating_supernode.back();
+        const double* U = update_stack_.data() + update_start.back();
+        const int* rel = relative_.data() + struct_start_[child];
+        const int size = struct_start_[child + 1] - struct_start_[child];
         for (int b = 0; b < size; ++b) {
-          const double* u = U.data() + static_cast<std::ptrdiff_t>(b) * size;
+          const double* u = U + static_cast<std::ptrdiff_t>(b) * size;
           if (rel[b] < k) {
             double* column = f + static_cast<std::ptrdiff_t>(rel[b]) * r;
             for (int a = b; a < size; ++a)
@@ -302,7 +323,7 @@ public:
               column[rel[a] - k] += u[a];
           }
         }
-        updates.pop_back();
+        update_start.pop_back();
         updating_supernode.pop_back();
       }
 
@@ -352,7 +373,15 @@ public:
         const auto L21 = F.block(k, 0, below, k);
         W.noalias() = L21 * Eigen::Map<const Eigen::VectorXd>(D_.data() + first, k).asDiagonal();
         T.triangularView<Eigen::Lower>() -= W * L21.transpose();
-        updates.push_back(std::move(T));
+        // Onto the stack where the children's updates were (they are all read).
+        const std::size_t start =
+            update_start.empty() ? 0
+                                 : update_start.back() + update_entries(updating_supernode.back());
+        double* to = update_stack_.data() + start;
+        for (int b = 0; b < below; ++b)
+          std::copy(T.data() + std::ptrdiff_t(b) * below + b,
+                    T.data() + std::ptrdiff_t(b + 1) * below, to + std::ptrdiff_t(b) * below + b);
+        update_start.push_back(start);
         updating_supernode.push_back(s);
       }
     }
@@ -455,6 +484,12 @@ public:
 
 private:
   int number_of_supernodes() const { return static_cast<int>(super_first_.size()) - 1; }
+  // The entries of supernode s's update matrix.
+  std::size_t update_entries(int s) const
+  {
+    const std::size_t below = std::size_t(struct_start_[s + 1] - struct_start_[s]);
+    return below * below;
+  }
 
   static void postorder(const std::vector<int>& parent, std::vector<int>& post)
   {
@@ -614,6 +649,8 @@ private:
   std::vector<int> assembly_start_, assembly_source_, diagonal_source_;
   std::vector<std::size_t> assembly_position_, panel_start_;
   Uninitialized_array<double> L_;
+  std::size_t update_stack_size_ = 0;
+  Uninitialized_array<double> update_stack_, update_work_; // see factorize()
   std::vector<double> D_;
   std::vector<char> is_zero_pivot_;
   int zero_pivots_ = 0, negative_pivot_ = -1;
