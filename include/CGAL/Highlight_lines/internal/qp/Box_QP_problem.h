@@ -34,13 +34,23 @@ public:
 
   void resize(std::size_t n)
   {
-    n_ = n;
     upper_triplets_.clear();
     // A small problem sums P in place (a real dent's fairing, 100-300 variables, makes 3 to 7
-    // set_P() calls per entry); a large one collects triplets (n² sums would not fit).
+    // set_P() calls per entry); a large one sums in place the entries of the pattern of the
+    // problems before it with as many variables (see add_P()).
     dense_ = n <= dense_size_limit;
     dense_values_.assign(dense_ ? n * (n + 1) / 2 : 0, 0.);
     dense_present_.assign(dense_values_.size(), 0);
+    if (dense_ || n != n_ || pattern_start_.size() != n + 1) {
+      pattern_start_.assign(dense_ ? 0 : n + 1, 0);
+      pattern_rows_.clear();
+      pattern_values_.clear();
+      pattern_set_.clear();
+    } else {
+      std::fill(pattern_values_.begin(), pattern_values_.end(), 0.);
+      std::fill(pattern_set_.begin(), pattern_set_.end(), static_cast<unsigned char>(0));
+    }
+    n_ = n;
     q_.setZero(static_cast<Eigen::Index>(n));
     r_ = 0.;
     l_.setConstant(static_cast<Eigen::Index>(n), -std::numeric_limits<double>::infinity());
@@ -67,9 +77,28 @@ public:
       const std::size_t at = j * (j + 1) / 2 + i;
       dense_values_[at] += value;
       dense_present_[at] = 1;
-    } else {
-      upper_triplets_.emplace_back(static_cast<int>(i), static_cast<int>(j), value);
+      return;
     }
+    // An entry of the known pattern is summed in its place; another one waits as a triplet
+    // until the triplets are merged into the pattern. Successive programs of an iterative
+    // method share their pattern (a fairing declares it in its first program), so that after
+    // the first one nearly every call is summed in place. Collecting every call as a triplet,
+    // then sorting and summing them, took two more passes over all the calls of each program
+    // (10^5-variable fairing: median 2.08 -> 1.91 x PMP::fair, peak memory 958 -> 930 MiB).
+    const int* rows = pattern_rows_.data();
+    const int* begin = rows + pattern_start_[j];
+    const int* end = rows + pattern_start_[j + 1];
+    const int* found = std::lower_bound(begin, end, static_cast<int>(i));
+    if (found != end && *found == static_cast<int>(i)) {
+      const std::size_t at = static_cast<std::size_t>(found - rows);
+      pattern_values_[at] += value;
+      pattern_set_[at] = 1;
+      return;
+    }
+    upper_triplets_.emplace_back(static_cast<int>(i), static_cast<int>(j), value);
+    // Merged when they outnumber the pattern's entries (and n): linear in the calls overall.
+    if (upper_triplets_.size() >= pattern_rows_.size() + 8 * n_)
+      merge_triplets_into_pattern();
   }
 
   void add_P(const Sparse_matrix& matrix)
@@ -85,8 +114,6 @@ public:
       }
       return;
     }
-    if (!dense_)
-      upper_triplets_.reserve(upper_triplets_.size() + static_cast<std::size_t>(matrix.nonZeros()));
     for (int col = 0; col < matrix.outerSize(); ++col)
       for (Sparse_matrix::InnerIterator it(matrix, col); it; ++it)
         add_P(static_cast<std::size_t>(it.row()), static_cast<std::size_t>(col), it.value());
@@ -132,6 +159,13 @@ public:
         message = os.str();
         return Box_QP_status::INVALID_INPUT;
       }
+    for (std::size_t j = 0; j + 1 < pattern_start_.size(); ++j)
+      for (int p = pattern_start_[j]; p < pattern_start_[j + 1]; ++p)
+        if (pattern_set_[p] && !std::isfinite(pattern_values_[p])) { // as the dense sums
+          os << "P(" << pattern_rows_[p] << ", " << j << ") is " << pattern_values_[p];
+          message = os.str();
+          return Box_QP_status::INVALID_INPUT;
+        }
     for (std::size_t j = 0, at = 0; j < (dense_ ? n_ : 0); ++j)
       for (std::size_t i = 0; i <= j; ++i, ++at)
         if (!std::isfinite(dense_values_[at])) { // a sum is finite if its terms are
@@ -176,15 +210,14 @@ public:
   // Builds the full symmetric matrix (both triangles, duplicates summed, every diagonal
   // entry present even if zero: solvers replace the rows of active variables by their
   // diagonal) and the norms the tolerances are relative to. Requires validate() to have
-  // succeeded. The upper triangle is gathered by columns with a counting sort and summed
-  // with a marker array; two transpositions then give the lower and the upper part of every
-  // column of P in increasing rows. Linear in the number of set_P() calls, which outnumber
-  // the entries several times in an assembly of local stencils.
+  // succeeded. The upper triangle is gathered by columns from the dense sums or the pattern
+  // (the last triplets merged into it first); two transpositions then give the lower and the
+  // upper part of every column of P in increasing rows. Linear in the number of entries and of
+  // the set_P() calls since the last merge.
   void assemble()
   {
     const int n = static_cast<int>(n_);
-    // The upper triangle with duplicates summed, by columns, rows in no particular order;
-    // the diagonal entry first.
+    // The upper triangle with duplicates summed, by columns, the diagonal entry first.
     // The work arrays are members: at 10^5 variables they hold millions of entries, and
     // allocating them afresh for each program of a fairing faults their pages in each time.
     std::vector<int>& upper_rows = upper_rows_;
@@ -192,10 +225,12 @@ public:
     std::vector<int> upper_start(n_ + 1, 0);
     upper_rows.clear();
     upper_values.clear();
-    if (dense_)
+    if (dense_) {
       gather_dense_upper(upper_start, upper_rows, upper_values);
-    else
-      gather_triplet_upper(upper_start, upper_rows, upper_values);
+    } else {
+      merge_triplets_into_pattern();
+      gather_pattern_upper(upper_start, upper_rows, upper_values);
+    }
     // Column j of P: the rows i < j (its strictly upper part), then the rows k >= j (the
     // entries (j, k) of the upper triangle).
     std::vector<int> upper_count(n_, 0), lower_count(n_, 0);
@@ -308,11 +343,14 @@ public:
   }
 
 private:
-  // The triplets' upper triangle by columns, each entry summed in the order of the set_P()
-  // calls: a counting sort, then a marker array.
-  void gather_triplet_upper(std::vector<int>& upper_start, std::vector<int>& upper_rows,
-                            std::vector<double>& upper_values)
+  // Adds the entries of the triplets to the pattern (each summed in the order of the set_P()
+  // calls: a stable counting sort by column, then a marker array), keeping the rows of each
+  // column increasing. A triplet's entry is never in the pattern: it would have been summed
+  // there.
+  void merge_triplets_into_pattern()
   {
+    if (upper_triplets_.empty())
+      return;
     const int n = static_cast<int>(n_);
     std::vector<int> start;
     std::vector<std::pair<int, double>>& by_column = by_column_;
@@ -323,22 +361,67 @@ private:
             emit(t.col(), std::pair<int, double>(t.row(), t.value()));
         },
         start, by_column);
-    std::vector<int> slot(n_, -1);
-    upper_rows.reserve(by_column.size() / 2 + n_);
-    upper_values.reserve(upper_rows.capacity());
+    upper_triplets_.clear();
+    std::vector<int> column_of(n_, -1), slot(n_), merged_start(n_ + 1, 0), merged_rows;
+    std::vector<double> merged_values;
+    std::vector<unsigned char> merged_set;
+    const std::size_t merged_size = pattern_rows_.size() + by_column.size();
+    merged_rows.reserve(merged_size);
+    merged_values.reserve(merged_size);
+    merged_set.reserve(merged_size);
+    std::vector<std::pair<int, double>> added; // the new entries of one column, summed
     for (int j = 0; j < n; ++j) {
-      const int first = static_cast<int>(upper_rows.size());
-      upper_rows.push_back(j);
-      upper_values.push_back(0.);
-      slot[j] = first;
+      added.clear();
       for (int p = start[j]; p < start[j + 1]; ++p) {
         const int i = by_column[p].first;
-        if (slot[i] < first) {
-          slot[i] = static_cast<int>(upper_rows.size());
-          upper_rows.push_back(i);
-          upper_values.push_back(0.);
+        if (column_of[i] != j) {
+          column_of[i] = j;
+          slot[i] = static_cast<int>(added.size());
+          added.emplace_back(i, 0.);
         }
-        upper_values[slot[i]] += by_column[p].second;
+        added[static_cast<std::size_t>(slot[i])].second += by_column[p].second;
+      }
+      std::sort(added.begin(), added.end());
+      auto next_added = added.begin();
+      for (int p = pattern_start_[j]; p <= pattern_start_[j + 1]; ++p) {
+        const int old_row = p < pattern_start_[j + 1] ? pattern_rows_[p] : n;
+        for (; next_added != added.end() && next_added->first < old_row; ++next_added) {
+          merged_rows.push_back(next_added->first);
+          merged_values.push_back(next_added->second);
+          merged_set.push_back(1);
+        }
+        if (old_row < n) {
+          merged_rows.push_back(old_row);
+          merged_values.push_back(pattern_values_[p]);
+          merged_set.push_back(pattern_set_[p]);
+        }
+      }
+      merged_start[j + 1] = static_cast<int>(merged_rows.size());
+    }
+    pattern_start_.swap(merged_start);
+    pattern_rows_.swap(merged_rows);
+    pattern_values_.swap(merged_values);
+    pattern_set_.swap(merged_set);
+  }
+
+  // The upper triangle by columns from the pattern: its entries set in this problem, and every
+  // diagonal entry (zero if not set), first in its column.
+  void gather_pattern_upper(std::vector<int>& upper_start, std::vector<int>& upper_rows,
+                            std::vector<double>& upper_values) const
+  {
+    for (std::size_t j = 0; j < n_; ++j) {
+      const int diagonal_at = static_cast<int>(upper_rows.size());
+      upper_rows.push_back(static_cast<int>(j));
+      upper_values.push_back(0.);
+      for (int p = pattern_start_[j]; p < pattern_start_[j + 1]; ++p) {
+        if (!pattern_set_[p])
+          continue;
+        if (pattern_rows_[p] == static_cast<int>(j)) {
+          upper_values[diagonal_at] = pattern_values_[p];
+        } else {
+          upper_rows.push_back(pattern_rows_[p]);
+          upper_values.push_back(pattern_values_[p]);
+        }
       }
       upper_start[j + 1] = static_cast<int>(upper_rows.size());
     }
@@ -373,8 +456,16 @@ private:
 
   std::size_t n_ = 0;
   static constexpr std::size_t dense_size_limit = 512; // 1 MiB of sums at most
+  // The sparse case (see add_P()): the pattern of the entries set since the number of
+  // variables last changed (the union of those problems' patterns), by columns with increasing
+  // rows (pattern_start_, pattern_rows_),
+  // this problem's sums there (pattern_values_) and whether it set each (pattern_set_); the
+  // entries outside the pattern as triplets until merged.
+  std::vector<int> pattern_start_, pattern_rows_;
+  std::vector<double> pattern_values_;
+  std::vector<unsigned char> pattern_set_;
   std::vector<Triplet> upper_triplets_;
-  std::vector<std::pair<int, double>> by_column_; // work arrays of assemble()
+  std::vector<std::pair<int, double>> by_column_; // work array of merge_triplets_into_pattern()
   std::vector<int> upper_rows_;
   std::vector<double> upper_values_;
   bool dense_ = false;
