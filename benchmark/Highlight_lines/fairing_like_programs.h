@@ -15,7 +15,16 @@
 // Delaunay disk patch (random points whose density varies threefold across the disk, the
 // boundary ring fixed), plus a sum of rank-one terms  j j^T  whose supports are those of the
 // highlight nodes of the fairing (the two ends of an edge crossing a level line and their
-// one-rings), weighing about a third of the bi-Laplacian on the diagonal.
+// one-rings), weighing about a third of the bi-Laplacian on the diagonal. It couples the
+// vertices within two edges.
+//
+//   Fairing_like_patch patch(n, Fairing_like_patch::Fairness::CURVATURE_VARIATION);
+//
+// replaces the bi-Laplacian by a curvature-variation-like term, the fairing's default energy:
+// the squared differences across the edges of the mean curvatures H = M^-1 L x (L over all the
+// vertices, the boundary ring's x fixed at 0), each weighted by its edge's length. It couples
+// the vertices within three edges, as the programs of fair_with_highlight_lines() do (about
+// 1.7 times the entries of the bi-Laplacian's, and several times its factorisation's flops).
 //
 // Used by benchmark_qp_solver and benchmark_factorization (same seeds, same matrices).
 
@@ -28,6 +37,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <random>
 #include <utility>
 #include <vector>
@@ -53,7 +63,9 @@ struct Fairing_like_patch
   Eigen::VectorXd bound; // |x_i| <= bound_i
   std::vector<Point> position;
 
-  explicit Fairing_like_patch(int n)
+  enum class Fairness { BI_LAPLACIAN, CURVATURE_VARIATION };
+
+  explicit Fairing_like_patch(int n, Fairness fairness = Fairness::BI_LAPLACIAN)
   {
     std::mt19937 random(20260101u + static_cast<unsigned>(n));
     std::uniform_real_distribution<double> uniform(0., 1.);
@@ -123,7 +135,23 @@ struct Fairing_like_patch
     Eigen::VectorXd inverse_area(n);
     for (int i = 0; i < n; ++i)
       inverse_area[i] = 1. / area[i];
-    const Sparse_matrix bilaplacian = Sparse_matrix(W.transpose()) * inverse_area.asDiagonal() * W;
+    Sparse_matrix fairness_term = Sparse_matrix(W.transpose()) * inverse_area.asDiagonal() * W;
+    if (fairness == Fairness::CURVATURE_VARIATION) {
+      // Rows: the edges; (H_a - H_b) sqrt(length) with H = M^-1 L restricted to the interior
+      // columns (every vertex's mean curvature, the boundary ring's too).
+      std::vector<Eigen::Triplet<double>> difference;
+      for (std::size_t e = 0; e < edges.size(); ++e) {
+        const auto [a, b] = edges[e];
+        const double weight =
+            std::sqrt(std::sqrt(CGAL::squared_distance(position[a], position[b])));
+        difference.emplace_back(int(e), a, weight / area[a]);
+        difference.emplace_back(int(e), b, -weight / area[b]);
+      }
+      Sparse_matrix D(int(edges.size()), all);
+      D.setFromTriplets(difference.begin(), difference.end());
+      const Sparse_matrix G = D * Sparse_matrix(L.leftCols(n));
+      fairness_term = Sparse_matrix(G.transpose()) * G;
+    }
 
     // Highlight nodes: edges crossing the level lines of a linear "distance" function.
     std::vector<Eigen::Triplet<double>> nodes;
@@ -150,8 +178,8 @@ struct Fairing_like_patch
     low_rank.setFromTriplets(nodes.begin(), nodes.end());
     // The node term weighs about a third of the fairness term on the diagonal.
     const double weight =
-        0.3 * bilaplacian.diagonal().mean() / std::max(low_rank.diagonal().mean(), 1e-300);
-    Q = bilaplacian + weight * low_rank;
+        0.3 * fairness_term.diagonal().mean() / std::max(low_rank.diagonal().mean(), 1e-300);
+    Q = fairness_term + weight * low_rank;
     Q.makeCompressed();
     bound.resize(n);
     for (int i = 0; i < n; ++i)

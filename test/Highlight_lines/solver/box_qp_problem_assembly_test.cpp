@@ -114,6 +114,13 @@ TEST(BoxQPProblemAssembly, TheNextProblemHoldsOnlyItsOwnEntries)
   // And the first one again: the entries only the second problem set are gone.
   assemble(problem, n, first);
   expect_matrix_of(problem, n, first);
+  // A problem that sets a few of the entries (the pattern keeps only those afterwards), then
+  // the first one again.
+  const std::vector<Call> few = random_calls(n, n / 10, 2, 10);
+  assemble(problem, n, few);
+  expect_matrix_of(problem, n, few);
+  assemble(problem, n, first);
+  expect_matrix_of(problem, n, first);
 }
 
 TEST(BoxQPProblemAssembly, AnotherNumberOfVariablesStartsAFreshPattern)
@@ -144,6 +151,25 @@ TEST(BoxQPProblemAssembly, ANonFiniteSumInThePatternIsReported)
   const std::string entry =
       "P(" + std::to_string(calls[5].i) + ", " + std::to_string(calls[5].j) + ") is ";
   EXPECT_EQ(message.rfind(entry, 0), 0u) << message;
+}
+
+// Finite terms whose sum overflows: rejected whether they wait as triplets (a fresh problem)
+// or are summed in the pattern (the same problem again), as the dense sums are.
+TEST(BoxQPProblemAssembly, AnOverflowingSumIsReportedWhereverItsTermsWait)
+{
+  const std::vector<Call> calls = random_calls(n, 2 * n, 3, 9);
+  Box_QP_problem problem;
+  for (int round = 0; round < 2; ++round) {
+    SCOPED_TRACE(round == 0 ? "as triplets" : "in the pattern");
+    problem.resize(n);
+    for (const Call& call : calls)
+      problem.add_P(call.i, call.j, call.value);
+    problem.add_P(3, 7, 1e308);
+    problem.add_P(3, 7, 1e308);
+    std::string message;
+    EXPECT_EQ(problem.validate(message), Box_QP_status::INVALID_INPUT);
+    EXPECT_EQ(message, "P(3, 7) is inf");
+  }
 }
 
 } // namespace

@@ -4,12 +4,15 @@
 
 #include <CGAL/Highlight_lines/internal/qp/Supernodal_LDLT.h>
 #include <CGAL/Highlight_lines/internal/qp/fill_reducing_ordering.h>
+#include <CGAL/Highlight_lines/internal/qp/uninitialized_array.h>
 
 #include <Eigen/SparseCholesky>
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <functional>
+#include <new>
 #include <limits>
 #include <numeric>
 #include <random>
@@ -433,6 +436,46 @@ TEST(FillReducingOrdering, TheAnalysisKeepsTheOrderingOfFewerFlops)
     EXPECT_EQ(analyze_in_fill_reducing_ordering(by_default, A),
               fill_reducing_ordering(A, Ordering_method::MINIMUM_DEGREE));
   }
+}
+
+// Sanitizers' allocators report an impossible allocation as an error instead of throwing.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define HIGHLIGHT_LINES_TEST_SANITIZED_ALLOCATOR
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) ||                         \
+    __has_feature(memory_sanitizer) || __has_feature(hwaddress_sanitizer)
+#define HIGHLIGHT_LINES_TEST_SANITIZED_ALLOCATOR
+#endif
+#endif
+
+// The factor's storage: kept when large enough, values copied and moved whole, and empty (not
+// a size without storage) when an allocation fails.
+TEST(UninitializedArray, KeepsItsStorageAndIsEmptyAfterAFailedAllocation)
+{
+  using CGAL::Highlight_lines::internal::Uninitialized_array;
+  Uninitialized_array<double> array;
+  array.resize(100);
+  std::iota(array.data(), array.data() + 100, 0.);
+  const double* storage = array.data();
+  array.resize(50);
+  EXPECT_EQ(array.data(), storage);
+  EXPECT_EQ(array.size(), 50u);
+  Uninitialized_array<double> copy = array;
+  EXPECT_NE(copy.data(), array.data());
+  EXPECT_TRUE(std::equal(array.data(), array.data() + 50, copy.data()));
+  const Uninitialized_array<double> moved = std::move(copy);
+  EXPECT_EQ(moved.size(), 50u);
+  EXPECT_EQ(moved.data()[49], 49.);
+  EXPECT_EQ(copy.size(), 0u);
+#if defined(HIGHLIGHT_LINES_TEST_SANITIZED_ALLOCATOR)
+  GTEST_SKIP() << "the sanitizer's allocator aborts on an impossible allocation, not throwing";
+#else
+  EXPECT_THROW(array.resize(std::numeric_limits<std::size_t>::max() / 16), std::bad_alloc);
+  EXPECT_EQ(array.size(), 0u);
+  array.resize(10); // usable again
+  array.data()[9] = 1.;
+  EXPECT_EQ(array.size(), 10u);
+#endif
 }
 
 } // namespace

@@ -145,30 +145,27 @@ public:
       u_[static_cast<Eigen::Index>(i)] = value;
   }
 
-  // Checks the data in the order a user would fix it: indices, then values, then bounds.
-  Box_QP_status validate(std::string& message) const
+  // Checks the data in the order a user would fix it: indices, then values, then bounds. The
+  // entries of P are checked as the sums assemble() will use (a non-finite term makes its sum
+  // non-finite, and finite terms can overflow): the triplets are merged into the pattern first.
+  Box_QP_status validate(std::string& message)
   {
     std::ostringstream os;
     if (!setter_error_.empty()) {
       message = setter_error_;
       return Box_QP_status::INVALID_INPUT;
     }
-    for (const Triplet& t : upper_triplets_)
-      if (!std::isfinite(t.value())) {
-        os << "P(" << t.row() << ", " << t.col() << ") is " << t.value();
-        message = os.str();
-        return Box_QP_status::INVALID_INPUT;
-      }
+    merge_triplets_into_pattern();
     for (std::size_t j = 0; j + 1 < pattern_start_.size(); ++j)
       for (int p = pattern_start_[j]; p < pattern_start_[j + 1]; ++p)
-        if (pattern_set_[p] && !std::isfinite(pattern_values_[p])) { // as the dense sums
+        if (pattern_set_[p] && !std::isfinite(pattern_values_[p])) {
           os << "P(" << pattern_rows_[p] << ", " << j << ") is " << pattern_values_[p];
           message = os.str();
           return Box_QP_status::INVALID_INPUT;
         }
     for (std::size_t j = 0, at = 0; j < (dense_ ? n_ : 0); ++j)
       for (std::size_t i = 0; i <= j; ++i, ++at)
-        if (!std::isfinite(dense_values_[at])) { // a sum is finite if its terms are
+        if (!std::isfinite(dense_values_[at])) {
           os << "P(" << i << ", " << j << ") is " << dense_values_[at];
           message = os.str();
           return Box_QP_status::INVALID_INPUT;
@@ -230,6 +227,7 @@ public:
     } else {
       merge_triplets_into_pattern();
       gather_pattern_upper(upper_start, upper_rows, upper_values);
+      drop_unset_entries_if_most();
     }
     // Column j of P: the rows i < j (its strictly upper part), then the rows k >= j (the
     // entries (j, k) of the upper triangle).
@@ -361,11 +359,17 @@ private:
             emit(t.col(), std::pair<int, double>(t.row(), t.value()));
         },
         start, by_column);
-    upper_triplets_.clear();
     std::vector<int> column_of(n_, -1), slot(n_), merged_start(n_ + 1, 0), merged_rows;
     std::vector<double> merged_values;
     std::vector<unsigned char> merged_set;
-    const std::size_t merged_size = pattern_rows_.size() + by_column.size();
+    std::size_t merged_size = pattern_rows_.size(); // the old entries and the distinct new ones
+    for (int j = 0; j < n; ++j)
+      for (int p = start[j]; p < start[j + 1]; ++p)
+        if (column_of[by_column[p].first] != j) {
+          column_of[by_column[p].first] = j;
+          ++merged_size;
+        }
+    std::fill(column_of.begin(), column_of.end(), -1);
     merged_rows.reserve(merged_size);
     merged_values.reserve(merged_size);
     merged_set.reserve(merged_size);
@@ -402,6 +406,37 @@ private:
     pattern_rows_.swap(merged_rows);
     pattern_values_.swap(merged_values);
     pattern_set_.swap(merged_set);
+    upper_triplets_.clear(); // merged: not before, so that a failed allocation loses no call
+  }
+
+  // Keeps only the entries set in this problem where the others are the majority: the pattern
+  // is the union of the patterns since the number of variables last changed, which a solver
+  // reused for unrelated programs would otherwise grow without bound.
+  void drop_unset_entries_if_most()
+  {
+    const std::size_t set = static_cast<std::size_t>(
+        std::count(pattern_set_.begin(), pattern_set_.end(), static_cast<unsigned char>(1)));
+    if (2 * set >= pattern_set_.size())
+      return;
+    std::size_t kept = 0;
+    for (std::size_t j = 0; j < n_; ++j) {
+      const int begin = pattern_start_[j], end = pattern_start_[j + 1];
+      pattern_start_[j] = static_cast<int>(kept);
+      for (int p = begin; p < end; ++p)
+        if (pattern_set_[p]) {
+          pattern_rows_[kept] = pattern_rows_[p];
+          pattern_values_[kept] = pattern_values_[p];
+          pattern_set_[kept] = 1;
+          ++kept;
+        }
+    }
+    pattern_start_[n_] = static_cast<int>(kept);
+    pattern_rows_.resize(kept);
+    pattern_values_.resize(kept);
+    pattern_set_.resize(kept);
+    pattern_rows_.shrink_to_fit();
+    pattern_values_.shrink_to_fit();
+    pattern_set_.shrink_to_fit();
   }
 
   // The upper triangle by columns from the pattern: its entries set in this problem, and every

@@ -6,6 +6,7 @@
 
 #include <CGAL/Highlight_lines/internal/qp/bucket_sort.h>
 #include <CGAL/Highlight_lines/internal/qp/uninitialized_array.h>
+#include <CGAL/assertions.h>
 
 #include <Eigen/Dense>
 
@@ -377,6 +378,7 @@ public:
         const std::size_t start =
             update_start.empty() ? 0
                                  : update_start.back() + update_entries(updating_supernode.back());
+        CGAL_assertion(start + update_entries(s) <= update_stack_size_);
         double* to = update_stack_.data() + start;
         for (int b = 0; b < below; ++b)
           std::copy(T.data() + std::ptrdiff_t(b) * below + b,

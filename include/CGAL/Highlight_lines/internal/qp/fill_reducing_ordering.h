@@ -48,7 +48,9 @@ inline constexpr bool has_nested_dissection()
 // 15.0 s (six and seven runs, each 14 to 21 s); at 4.8 10^4, 5.4 / 5.2 -> 4.4 / 4.4 s; at 2.4
 // 10^4 no difference (1.7 / 1.6 s both). On the
 // two-ring bi-Laplacians of benchmark_factorization (1,750 to 3,900 flops per entry from 2.5
-// 10^4 to 10^5 variables) METIS's ordering costs more than four factorisations save.
+// 10^4 to 10^5 variables) METIS's ordering costs more than four factorisations save; counting
+// the preconditioning solves too (nested dissection takes 0.8 times a solve at 10^5, and a
+// large fairing makes ~140), the balance there is close (benchmark_factorization --table).
 constexpr double nested_dissection_flops_per_entry = 5000;
 
 // The fill-reducing ordering of the symmetric pattern `pattern` (both triangles stored, the

@@ -57,7 +57,8 @@ public:
   void resize(std::size_t size)
   {
     if (size > capacity_) {
-      values_.reset(); // release first: the old and the new factor need not coexist
+      values_.reset();       // release first: the old and the new factor need not coexist
+      size_ = capacity_ = 0; // empty if the allocation throws
       values_.reset(new T[size]);
       capacity_ = size;
       advise_huge_pages();
