@@ -241,8 +241,10 @@ void fairing_at_scale(int n, int iterations)
                 "max |x| / e %.3g%s, lines %zu, QP %zu active-set steps, %zu factorisations\n",
                 t - last, status_mib("VmHWM"), it.target_value, it.fairness_energy,
                 it.difference_energy, it.relative_max_displacement,
-                it.extrapolation > 1 ? " (accelerated)" : "", it.lines_targeted,
-                it.solver.iterations, it.solver.factorizations);
+                it.extrapolation > 1
+                    ? (" (accelerated " + std::to_string(it.extrapolation) + " x)").c_str()
+                    : "",
+                it.lines_targeted, it.solver.iterations, it.solver.factorizations);
     std::fflush(stdout);
     last = now();
     return true;

@@ -25,7 +25,9 @@ struct Fairing_report
   enum class Status {
     /// the largest displacement of a step fell below ε times the mean edge length (eq. 17), or
     /// the steps shrank so fast that all later ones together would stay below it, or the
-    /// target value `F` became stationary under steps below 10 ε times it
+    /// target value `F` became stationary under steps below 10 ε times it (each step as its
+    /// program asked for it, `Iteration::relative_solution_displacement`; the mesh is then the
+    /// iterate of lowest `F`)
     CONVERGED,
     /// the iteration bound was reached first; the mesh is the iterate of lowest `F`
     ITERATION_LIMIT,
@@ -66,6 +68,10 @@ struct Fairing_report
     /// last steps and solutions, within the trust region): the length of the step taken over
     /// the length of the program's solution.
     double extrapolation = 1;
+    /// Largest |x_i| of the program's solution (before any extrapolation, and before vertices
+    /// were held back against flips) divided by the mean edge length in the region: the step
+    /// the program asked for. `CONVERGED`'s test of a stationary `F` measures the steps so.
+    double relative_solution_displacement = 0;
     /// Movable vertices held back because the program's solution would have flipped a face
     /// around them (a face whose normal turns by more than 90° from its input normal): their
     /// bounds were tightened and the program solved again, or their displacement was scaled
@@ -109,8 +115,8 @@ struct Fairing_report
   /// fields are zero).
   std::vector<Iteration> history;
   /// Whether the mesh returned is an earlier iterate than the last, because the fairing stopped
-  /// short of convergence (`ITERATION_LIMIT`, `STEP_BLOCKED` or `STALLED`) after a step that raised
-  /// `F`.
+  /// short of convergence (`ITERATION_LIMIT`, `STEP_BLOCKED` or `STALLED`), or found `F`
+  /// stationary (`CONVERGED`), after a step that raised `F`.
   bool returned_best_iterate = false;
 
   /// Whether the mesh returned comes from a second run, started from the region filled by

@@ -271,6 +271,49 @@ TEST(StepControl, ANonConvergedFairingReturnsTheIterateOfLowestF)
   }
 }
 
+// F stationary under steps the programs ask for (between ε and 10 ε ē: too large for the test
+// on the last step, too small to matter) ends the fairing without solving a further program,
+// and the mesh returned is the iterate of lowest F. From the third program on, every solution
+// is rescaled to a fixed size: the steps then overshoot the minimum and F alternates (the
+// extrapolation of the tail would stretch such steps further). Three such steps, F within
+// 0.3 % of where they started: converged, the fifth iterate's program not solved.
+TEST(StepControl, AStationaryTargetEndsTheIterationBeforeAnotherProgram)
+{
+  const Surface_mesh input = dented_hood(24, 0.05);
+  const auto region = faces_within(input, 0.5);
+  double edge_sum = 0;
+  std::size_t edges = 0;
+  for (Face f : region)
+    for (auto h : CGAL::halfedges_around_face(input.halfedge(f), input)) {
+      edge_sum += std::sqrt(
+          CGAL::squared_distance(input.point(input.source(h)), input.point(input.target(h))));
+      ++edges;
+    }
+  const double mean_edge = edge_sum / double(edges);
+  for (double size : {0.005, 0.009}) { // in mean edge lengths; ε = 0.001 (the default)
+    Surface_mesh mesh = input;
+    Meddling_solver solver;
+    solver.meddle = [&](int call, std::vector<double>& x) {
+      double largest = 0;
+      for (double v : x)
+        largest = (std::max)(largest, std::abs(v));
+      if (call >= 3 && largest > 0)
+        for (double& v : x)
+          v *= size * mean_edge / largest;
+    };
+    const auto report = CGAL::fair_with_highlight_lines(mesh, region, lights_above,
+                                                        HLP::qp_solver(std::ref(solver)));
+    ASSERT_TRUE(report.converged()) << HL::to_string(report.status);
+    EXPECT_EQ(std::size_t(solver.calls), report.iterations) << "size " << size;
+    ASSERT_GE(report.iterations, 3u);
+    EXPECT_LE(report.iterations, 5u) << "size " << size; // two free steps, three rescaled ones
+    for (std::size_t i = 2; i < report.iterations; ++i)
+      EXPECT_NEAR(report.history[i].relative_solution_displacement, size, 0.05 * size);
+    for (const auto& step : report.history)
+      EXPECT_LE(report.history.back().target_value, step.target_value) << "size " << size;
+  }
+}
+
 // A dent several grid steps deep, wider than the bound of eq. 16 lets a vertex move in one
 // iteration: the fairing converges within the default iteration bound, without flips.
 TEST(StepControl, ADeepDentConvergesWithinTheIterationBound)
