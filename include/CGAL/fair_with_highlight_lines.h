@@ -55,8 +55,10 @@ solver, moves the vertices without flipping a face, and recomputes the highlight
 the region; it stops when the step's `max |x_i| / ē < ε` (eq. 17, `ē` the mean edge length in
 the region), when the steps shrink so fast that all later ones together would stay below
 `ε ē` (a geometric tail estimated from the last three steps), when `F` is stationary (over the
-last three steps, each asked for below `10 ε ē` by its program, it fell by less than `10^-3` of
-itself per step; then the iterate of lowest `F` is returned), or after the iteration bound.
+last three steps, each below `10 ε ē`, it fell by less than `10^-3` of itself per step; also
+tested before the next program is solved, with the steps as the programs asked for them, and
+then the iterate of lowest `F` is returned if it is one of the last four), or after the iteration
+bound.
 
 - *Step control*: `r_i = μ b_i`, `b_i` eq. 16's bound (half the shortest edge at `V_i`) and
   `μ` a trust-region factor for the whole region: it starts at 2, doubles (up to 64) when a step

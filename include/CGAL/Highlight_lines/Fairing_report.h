@@ -25,9 +25,10 @@ struct Fairing_report
   enum class Status {
     /// the largest displacement of a step fell below ε times the mean edge length (eq. 17), or
     /// the steps shrank so fast that all later ones together would stay below it, or the
-    /// target value `F` became stationary under steps below 10 ε times it (each step as its
-    /// program asked for it, `Iteration::relative_solution_displacement`; the mesh is then the
-    /// iterate of lowest `F`)
+    /// target value `F` became stationary under steps below 10 ε times it (also tested before
+    /// the next program is solved, each step then counted as its program asked for it,
+    /// `Iteration::relative_solution_displacement`; the mesh is then the iterate of lowest `F` if
+    /// it is one of the last four)
     CONVERGED,
     /// the iteration bound was reached first; the mesh is the iterate of lowest `F`
     ITERATION_LIMIT,

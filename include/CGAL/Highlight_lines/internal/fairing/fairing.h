@@ -124,13 +124,15 @@ private:
       assemble_program(directions, step);
       const bool progress = step.target_value < (1 - stall_tolerance) * best_value_;
       iterates_without_progress = progress ? 0 : iterates_without_progress + 1;
-      keep_if_best(step.target_value);
+      keep_if_best(step.target_value, iteration);
       adapt_trust_region(step.target_value);
       // Before the iteration bound: converged, however many iterations that took.
       if (is_stationary(report.history, step.target_value)) {
         report.status = Fairing_report::Status::CONVERGED;
         report.history.push_back(step);
         stopped_before_solving_ = true;
+        // An older best is not a converged iterate: its program asked for more.
+        best_is_recent_ = iteration <= iteration_of_best_ + 3;
         break;
       }
       if (iteration >= budget) {
@@ -145,7 +147,7 @@ private:
       }
       set_step_bounds();
       std::vector<double> x = solve_program(step, iteration, report);
-      step.relative_solution_displacement = max_abs(x) / mean_edge_length_;
+      step.relative_solution_displacement = step.max_displacement / mean_edge_length_;
       accelerate_tail(x, step);
       take_step(x, directions, step);
       report.history.push_back(step);
@@ -424,7 +426,8 @@ private:
     previous_step_.clear();
     last_step_raised_value_ = blocked_ = extrapolation_cut_ = false;
     free_steps_.clear();
-    stopped_before_solving_ = false;
+    stopped_before_solving_ = best_is_recent_ = false;
+    iteration_of_best_ = 0;
     last_program_step_.clear();
     tail_solution_differences_.clear();
     tail_step_differences_.clear();
@@ -735,7 +738,9 @@ private:
   // stationarity test of converged() would wait for one more step to know F after the last one;
   // here that program is not solved. Extrapolated steps count as the programs asked for them: an
   // extrapolation that raised F is a guess beyond a small step, not a move the surface still wants,
-  // and it is undone (return_best_iterate()). Measured (December 7, 2026): at 10^5 movable vertices
+  // and it is undone (return_best_iterate()); one that lowered F counts so too: where F fell by
+  // less than 0.3 % over three iterations, the extrapolations found little more than the programs
+  // asked for. Measured (December 7, 2026): at 10^5 movable vertices
   // the last iteration solved a program cold (a factorisation) after an extrapolation of a
   // step of 0.0016 ē had raised F by 0.02 %, to confirm a step of 0.00096 ē.
   bool is_stationary(const std::vector<Fairing_report::Iteration>& history, double value) const
@@ -818,11 +823,12 @@ private:
   // ---------------------------------------------------------------------------------------
   // The best iterate
 
-  void keep_if_best(double value)
+  void keep_if_best(double value, std::size_t iteration)
   {
     if (value < best_value_) {
       best_value_ = value;
       best_points_ = checkpoint_;
+      iteration_of_best_ = iteration;
     }
   }
 
@@ -839,13 +845,15 @@ private:
     return last;
   }
 
-  // A fairing that stopped short of convergence, or found F stationary after a step that raised
-  // it (is_stationary()), returns the iterate of lowest F, not necessarily the last one.
+  // A fairing that stopped short of convergence returns the iterate of lowest F, not
+  // necessarily the last one; one that found F stationary (is_stationary()) after a step that
+  // raised it, the iterate of lowest F if it is one of the last four.
   void return_best_iterate(Fairing_report& report)
   {
     if (report.status != Fairing_report::Status::ITERATION_LIMIT &&
         report.status != Fairing_report::Status::STEP_BLOCKED &&
-        report.status != Fairing_report::Status::STALLED && !stopped_before_solving_)
+        report.status != Fairing_report::Status::STALLED &&
+        !(stopped_before_solving_ && best_is_recent_))
       return;
     if (report.history.empty() || !(best_value_ < report.history.back().target_value))
       return;
@@ -891,6 +899,8 @@ private:
   std::vector<double> applied_;                // the last step taken
   std::vector<char> free_steps_;        // per step taken: the program's minimiser, see take_step()
   bool stopped_before_solving_ = false; // see is_stationary()
+  bool best_is_recent_ = false;         // the iterate of lowest F is one of the last four
+  std::size_t iteration_of_best_ = 0;
   std::vector<double> last_program_step_; // the last solution inside the trust region, as solved
   Curvature_variation_workspace variation_workspace_; // reused by each program's assembly
   // The slow tail's differences of successive solutions and steps, see accelerate_tail().
