@@ -474,6 +474,23 @@ int main(int argc, char** argv)
     std::vector<std::vector<K::Point_3>> desired;
     HL::desired_highlight_lines(mesh, region, lights, std::back_inserter(desired));
     const pic::Image before = picture(mesh, region, lights, levels, desired, o);
+    // Without desired lines the highlight term is empty: the fairing then only lowers the
+    // fairness energy, which on a large region takes long for a result the user did not ask
+    // for. Said before the run.
+    if (desired.empty()) {
+      std::cout << "note: no highlight line crosses the region from border to border, so there "
+                   "are no desired lines: the fairing only smooths the region by its fairness "
+                   "energy; ";
+      if (region.size() == num_faces(mesh)) {
+        std::cout << "the region holds every face of the mesh";
+        if (o.region_file.empty())
+          std::cout << " (--radius " << radius << ", the bounding box diagonal is " << diagonal
+                    << ")";
+        std::cout << ": give a region around the defect, with a border\n";
+      } else
+        std::cout << "lights closer together (--spacing, --lines) or in another direction "
+                     "put lines across it\n";
+    }
 
     const auto start = std::chrono::steady_clock::now();
     auto progress = [](const HL::Fairing_report::Iteration& it) {
