@@ -334,6 +334,67 @@ TEST(StepControl, AStationaryTargetEndsTheIterationBeforeAnotherProgram)
   }
 }
 
+// The same on a Polyhedron_3 (the slow tail, extrapolated): the stationary stop comes at the
+// same iteration as on the Surface_mesh, with the same iterate returned.
+TEST(StepControl, AStationaryTargetEndsTheIterationOnAPolyhedronAsOnASurfaceMesh)
+{
+  const Soup soup = dented_hood_soup(24, 0.05);
+  Surface_mesh surface_mesh = to_mesh<Surface_mesh>(soup);
+  Polyhedron polyhedron = to_mesh<Polyhedron>(soup);
+  auto fair = [&](auto& mesh) {
+    typedef std::remove_reference_t<decltype(mesh)> Mesh;
+    std::vector<typename boost::graph_traits<Mesh>::face_descriptor> region;
+    double edge_sum = 0;
+    std::size_t edges = 0;
+    for (auto f : faces(mesh)) {
+      bool inside = true;
+      for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh)) {
+        const Point p = get(CGAL::vertex_point, mesh, v);
+        inside = inside && p.x() * p.x() + p.y() * p.y() < 0.25;
+      }
+      if (!inside)
+        continue;
+      region.push_back(f);
+      for (auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) {
+        edge_sum +=
+            std::sqrt(CGAL::squared_distance(get(CGAL::vertex_point, mesh, source(h, mesh)),
+                                             get(CGAL::vertex_point, mesh, target(h, mesh))));
+        ++edges;
+      }
+    }
+    const double mean_edge = edge_sum / double(edges);
+    Meddling_solver solver;
+    solver.meddle = [mean_edge](int call, std::vector<double>& x) {
+      double largest = 0;
+      for (double v : x)
+        largest = (std::max)(largest, std::abs(v));
+      if (call >= 3 && largest > 0)
+        for (double& v : x)
+          v *= 0.009 * std::pow(0.8, call - 3) * mean_edge / largest;
+    };
+    return CGAL::fair_with_highlight_lines(mesh, region, lights_above,
+                                           HLP::qp_solver(std::ref(solver)));
+  };
+  const HL::Fairing_report on_polyhedron = fair(polyhedron);
+  const HL::Fairing_report on_surface_mesh = fair(surface_mesh);
+  ASSERT_EQ(on_polyhedron.status, HL::Fairing_report::Status::CONVERGED)
+      << HL::to_string(on_polyhedron.status);
+  EXPECT_EQ(on_surface_mesh.status, HL::Fairing_report::Status::CONVERGED);
+  EXPECT_EQ(on_polyhedron.iterations, on_surface_mesh.iterations);
+  EXPECT_LE(on_polyhedron.iterations, 5u); // two free steps, three rescaled ones
+  EXPECT_EQ(on_polyhedron.returned_best_iterate, on_surface_mesh.returned_best_iterate);
+  ASSERT_EQ(on_polyhedron.history.size(), on_surface_mesh.history.size());
+  for (std::size_t i = 0; i < on_polyhedron.history.size(); ++i) {
+    EXPECT_NEAR(on_polyhedron.history[i].target_value, on_surface_mesh.history[i].target_value,
+                1e-9 * on_surface_mesh.history[i].target_value);
+    EXPECT_NEAR(on_polyhedron.history[i].relative_solution_displacement,
+                on_surface_mesh.history[i].relative_solution_displacement,
+                1e-9 + 1e-6 * on_surface_mesh.history[i].relative_solution_displacement);
+  }
+  for (const auto& step : on_polyhedron.history)
+    EXPECT_LE(on_polyhedron.history.back().target_value, step.target_value);
+}
+
 // A dent several grid steps deep, wider than the bound of eq. 16 lets a vertex move in one
 // iteration: the fairing converges within the default iteration bound, without flips.
 TEST(StepControl, ADeepDentConvergesWithinTheIterationBound)
