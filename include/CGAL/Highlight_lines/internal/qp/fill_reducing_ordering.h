@@ -40,7 +40,7 @@ inline constexpr bool has_nested_dissection()
 // When a minimum degree ordering's factorisation takes more flops per entry of the pattern
 // than this, nested dissection is tried as well, and the ordering of fewer flops is kept.
 // METIS costs 0.3-0.5 µs per entry more than minimum degree; where it wins it saves about a
-// third of the flops, at ~16 GFlop/s: the four factorisations of a large fairing repay it from
+// third of the flops, at ~16 GFlop/s: the 3-4 factorisations of a large fairing repay it from
 // about 5000 flops per entry. Measured (December 7, 2026; benchmark_scale --fairing-only, old
 // and new binaries alternated) on fairings, whose programs couple the vertices within three
 // edges: at 10^5 movable vertices 8,400 flops per entry, nested dissection 42 % fewer flops
