@@ -259,6 +259,22 @@ find_irregularities(const Mesh& mesh, const HL::Light_setup<K>& lights)
   return found;
 }
 
+// Whether some face of `region` has a neighbour outside it (the mesh's own border does not
+// count): a region without one holds whole parts of the mesh, which nothing outside holds.
+bool has_border_inside_the_mesh(const Mesh& mesh, const std::vector<face_descriptor>& region)
+{
+  std::vector<char> in_region(mesh.num_faces(), 0); // indices up to the removed faces too
+  for (face_descriptor f : region)
+    in_region[f.idx()] = 1;
+  for (face_descriptor f : region)
+    for (auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      const face_descriptor g = mesh.face(mesh.opposite(h));
+      if (g != Mesh::null_face() && !in_region[g.idx()])
+        return true;
+    }
+  return false;
+}
+
 // The light tunnel of the whole mesh, with the spacing refined so that about `lines` lights
 // cross the region.
 HL::Light_setup<K> region_light_tunnel(const Mesh& mesh, const std::vector<face_descriptor>& region,
@@ -478,18 +494,18 @@ int main(int argc, char** argv)
     // fairness energy, which on a large region takes long for a result the user did not ask
     // for. Said before the run.
     if (desired.empty()) {
-      std::cout << "note: no highlight line crosses the region from border to border, so there "
-                   "are no desired lines: the fairing only smooths the region by its fairness "
-                   "energy; ";
-      if (region.size() == num_faces(mesh)) {
-        std::cout << "the region holds every face of the mesh";
+      std::cout << "note: no highlight line gets a desired line here (one must cross the "
+                   "region's border twice, with nodes outside it at both ends): the fairing only "
+                   "smooths the region by its fairness energy; ";
+      if (!has_border_inside_the_mesh(mesh, region)) {
+        std::cout << "the region has no border inside the mesh (it holds all of each part of "
+                     "the mesh it touches";
         if (o.region_file.empty())
-          std::cout << " (--radius " << radius << ", the bounding box diagonal is " << diagonal
-                    << ")";
-        std::cout << ": give a region around the defect, with a border\n";
+          std::cout << "; --radius " << radius << ", the bounding box diagonal is " << diagonal;
+        std::cout << "): give a region around the defect, with a border\n";
       } else
-        std::cout << "lights closer together (--spacing, --lines) or in another direction "
-                     "put lines across it\n";
+        std::cout << "lights closer together (--spacing, --lines) or in another direction, or a "
+                     "region farther from the mesh's border, put lines across it\n";
     }
 
     const auto start = std::chrono::steady_clock::now();

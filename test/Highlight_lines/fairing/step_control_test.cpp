@@ -334,13 +334,19 @@ TEST(StepControl, AStationaryTargetEndsTheIterationBeforeAnotherProgram)
   }
 }
 
-// The same on a Polyhedron_3 (the slow tail, extrapolated): the stationary stop comes at the
-// same iteration as on the Surface_mesh, with the same iterate returned.
+// The same on a Polyhedron_3 (the slow tail, extrapolated): the stationary stop comes before
+// another program at the same iteration as on the Surface_mesh, with the same mesh returned.
 TEST(StepControl, AStationaryTargetEndsTheIterationOnAPolyhedronAsOnASurfaceMesh)
 {
   const Soup soup = dented_hood_soup(24, 0.05);
   Surface_mesh surface_mesh = to_mesh<Surface_mesh>(soup);
   Polyhedron polyhedron = to_mesh<Polyhedron>(soup);
+  struct Run
+  {
+    HL::Fairing_report report;
+    int programs_solved;
+    std::vector<Point> points; // in the soup's vertex order, which both meshes keep
+  };
   auto fair = [&](auto& mesh) {
     typedef std::remove_reference_t<decltype(mesh)> Mesh;
     std::vector<typename boost::graph_traits<Mesh>::face_descriptor> region;
@@ -372,27 +378,47 @@ TEST(StepControl, AStationaryTargetEndsTheIterationOnAPolyhedronAsOnASurfaceMesh
         for (double& v : x)
           v *= 0.009 * std::pow(0.8, call - 3) * mean_edge / largest;
     };
-    return CGAL::fair_with_highlight_lines(mesh, region, lights_above,
-                                           HLP::qp_solver(std::ref(solver)));
+    Run run;
+    run.report = CGAL::fair_with_highlight_lines(mesh, region, lights_above,
+                                                 HLP::qp_solver(std::ref(solver)));
+    run.programs_solved = solver.calls;
+    for (auto v : vertices(mesh))
+      run.points.push_back(get(CGAL::vertex_point, mesh, v));
+    return run;
   };
-  const HL::Fairing_report on_polyhedron = fair(polyhedron);
-  const HL::Fairing_report on_surface_mesh = fair(surface_mesh);
-  ASSERT_EQ(on_polyhedron.status, HL::Fairing_report::Status::CONVERGED)
-      << HL::to_string(on_polyhedron.status);
-  EXPECT_EQ(on_surface_mesh.status, HL::Fairing_report::Status::CONVERGED);
-  EXPECT_EQ(on_polyhedron.iterations, on_surface_mesh.iterations);
-  EXPECT_LE(on_polyhedron.iterations, 5u); // two free steps, three rescaled ones
-  EXPECT_EQ(on_polyhedron.returned_best_iterate, on_surface_mesh.returned_best_iterate);
-  ASSERT_EQ(on_polyhedron.history.size(), on_surface_mesh.history.size());
-  for (std::size_t i = 0; i < on_polyhedron.history.size(); ++i) {
-    EXPECT_NEAR(on_polyhedron.history[i].target_value, on_surface_mesh.history[i].target_value,
-                1e-9 * on_surface_mesh.history[i].target_value);
-    EXPECT_NEAR(on_polyhedron.history[i].relative_solution_displacement,
-                on_surface_mesh.history[i].relative_solution_displacement,
-                1e-9 + 1e-6 * on_surface_mesh.history[i].relative_solution_displacement);
+  const Run on_polyhedron = fair(polyhedron);
+  const Run on_surface_mesh = fair(surface_mesh);
+  const HL::Fairing_report& polyhedron_report = on_polyhedron.report;
+  const HL::Fairing_report& surface_mesh_report = on_surface_mesh.report;
+  ASSERT_EQ(polyhedron_report.status, HL::Fairing_report::Status::CONVERGED)
+      << HL::to_string(polyhedron_report.status);
+  EXPECT_EQ(surface_mesh_report.status, HL::Fairing_report::Status::CONVERGED);
+  // Stopped before solving another program: two free steps, then three rescaled ones at most.
+  EXPECT_EQ(std::size_t(on_polyhedron.programs_solved), polyhedron_report.iterations);
+  EXPECT_GE(polyhedron_report.iterations, 3u);
+  EXPECT_LE(polyhedron_report.iterations, 5u);
+  EXPECT_EQ(polyhedron_report.iterations, surface_mesh_report.iterations);
+  EXPECT_EQ(on_polyhedron.programs_solved, on_surface_mesh.programs_solved);
+  EXPECT_TRUE(polyhedron_report.returned_best_iterate);
+  EXPECT_EQ(polyhedron_report.returned_best_iterate, surface_mesh_report.returned_best_iterate);
+  bool extrapolated = false;
+  ASSERT_EQ(polyhedron_report.history.size(), surface_mesh_report.history.size());
+  for (std::size_t i = 0; i < polyhedron_report.history.size(); ++i) {
+    extrapolated = extrapolated || polyhedron_report.history[i].extrapolation > 1;
+    EXPECT_NEAR(polyhedron_report.history[i].target_value,
+                surface_mesh_report.history[i].target_value,
+                1e-9 * surface_mesh_report.history[i].target_value);
+    EXPECT_NEAR(polyhedron_report.history[i].relative_solution_displacement,
+                surface_mesh_report.history[i].relative_solution_displacement,
+                1e-9 + 1e-6 * surface_mesh_report.history[i].relative_solution_displacement);
   }
-  for (const auto& step : on_polyhedron.history)
-    EXPECT_LE(on_polyhedron.history.back().target_value, step.target_value);
+  EXPECT_TRUE(extrapolated) << "the slow tail was not extrapolated";
+  for (const auto& step : polyhedron_report.history)
+    EXPECT_LE(polyhedron_report.history.back().target_value, step.target_value);
+  ASSERT_EQ(on_polyhedron.points.size(), on_surface_mesh.points.size());
+  for (std::size_t i = 0; i < on_polyhedron.points.size(); ++i)
+    EXPECT_LT(CGAL::squared_distance(on_polyhedron.points[i], on_surface_mesh.points[i]), 1e-20)
+        << "vertex " << i;
 }
 
 // A dent several grid steps deep, wider than the bound of eq. 16 lets a vertex move in one
