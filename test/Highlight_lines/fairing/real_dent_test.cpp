@@ -454,7 +454,11 @@ TEST(RealDentStall, AStallEndsFiveHeldStepsAfterTheLastProgressAtTheIterateOfLow
     largest_difference =
         (std::max)(largest_difference,
                    std::sqrt(CGAL::squared_distance(vertex_copy.at(v)->point(), result.point(v))));
-  EXPECT_LE(largest_difference, 1e-9 * c.mean_edge_length);
+  // Alike up to the solver's tolerance: the two meshes' programs differ in the last bits (sums
+  // in another order), and the cold starts after held steps let the active-set iterations take
+  // other paths to the same optimum (measured 1.2e-7 e; 1e-12 e while those programs were
+  // warm-started).
+  EXPECT_LE(largest_difference, 1e-6 * c.mean_edge_length);
 }
 
 // The fairing also stops when all the steps still to come, estimated from the geometric tail of

@@ -213,6 +213,71 @@ TEST(StepControl, HoldingBackWorksOnAPolyhedron)
               1e-6 * on_surface_mesh.history.back().target_value);
 }
 
+// Records, per solve(), whether it starts a new program (set_P() called since the last solve)
+// and whether it was warm-started.
+struct Warm_start_recorder : Meddling_solver
+{
+  struct Call
+  {
+    bool new_program, warm;
+  };
+  std::vector<Call> record;
+  bool assembled = false, warm = false;
+  void set_P(std::size_t i, std::size_t j, double v)
+  {
+    assembled = true;
+    inner.set_P(i, j, v);
+  }
+  void set_warm_start(const std::vector<double>& x0)
+  {
+    warm = true;
+    inner.set_warm_start(x0);
+  }
+  template <typename OutputIterator>
+  HL::Box_QP_report solve(OutputIterator out)
+  {
+    record.push_back({assembled, warm});
+    assembled = warm = false;
+    return Meddling_solver::solve(out);
+  }
+};
+
+// After a step that held vertices back against flips, the next program starts cold (the held
+// entries sit at bounds the flip guard set, not the program); after a free step that lowered F
+// it starts from that step.
+TEST(StepControl, AProgramAfterAHeldBackStepStartsCold)
+{
+  const Surface_mesh input = dented_hood(24, 0.02);
+  const auto region = faces_within(input, 0.5);
+  Surface_mesh mesh = input;
+  Warm_start_recorder solver;
+  solver.meddle = [](int call, std::vector<double>& x) {
+    if (call == 1)
+      x[x.size() / 2] = 100.0; // flips faces: held back and solved again
+  };
+  const auto report =
+      CGAL::fair_with_highlight_lines(mesh, region, lights_above, HLP::qp_solver(std::ref(solver)));
+  std::vector<bool> program_warm;
+  for (const auto& call : solver.record)
+    if (call.new_program)
+      program_warm.push_back(call.warm);
+  ASSERT_GE(program_warm.size(), 3u);
+  ASSERT_GE(report.history.size(), program_warm.size());
+  ASSERT_GE(report.history.front().restrained_vertices, 1u);
+  std::size_t after_held = 0, warm_after_free = 0;
+  for (std::size_t k = 1; k < program_warm.size(); ++k) {
+    if (report.history[k - 1].restrained_vertices > 0) {
+      ++after_held;
+      EXPECT_FALSE(program_warm[k]) << "program " << k;
+    } else if (report.history[k].target_value < report.history[k - 1].target_value) {
+      warm_after_free += program_warm[k];
+    }
+  }
+  EXPECT_GE(after_held, 1u);
+  EXPECT_GE(warm_after_free, 1u); // the recorder tells warm starts apart
+  EXPECT_EQ(flips(input, mesh), 0u);
+}
+
 // A solver whose every solution after the first iteration sends the only movable vertex a
 // million region sizes along its normal (on this convex hood, that drags a face around it over,
 // at every scale the step control tries): the fairing stops with STEP_BLOCKED instead of
