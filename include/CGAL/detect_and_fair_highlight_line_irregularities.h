@@ -29,10 +29,11 @@ against the highlight lines left by the previous ones).
 
 Only the regions that are most likely defects are faired: those whose `confidence` reaches
 `minimum_confidence` (default 0.5: a compact region seen in at least half of the light setups;
-regions elongated along a feature or spread wider than a defect get a lower confidence, the
-more so the longer or wider they are: most `ELONGATED` and `EXTENDED` regions fall below it, not
-all. The kind is no proof: a dent on a flat plate can be reported `ELONGATED` with confidence
-0.68, and compact design regions of the camel head with 1). The others are reported as
+regions elongated along a feature get a lower confidence, the more so the longer they are:
+most `ELONGATED` regions fall below it, not all; regions spread wider than a defect of the
+detection's scale can make, `EXTENDED`, always do. The kind is no proof: a dent on a flat plate
+can be reported `ELONGATED` with confidence 0.68, and compact design regions of the camel head
+with 1). The others are reported as
 skipped (`Irregularity_repair::skipped`) and left untouched. Regions to be faired that touch
 are joined and faired as one (`Highlight_lines::join_touching_irregularities()`): faired apart,
 their common border would stay fixed in both fairings. And each is faired with a margin of `fairing_margin` rings of

@@ -100,9 +100,13 @@ struct Highlight_line_irregularity
   /// `min(1, (6w / l)^2)` (small for a region much larger than a defect), where `l` and `b`
   /// are four standard deviations of the positions of the anomalies along their two main axes
   /// and `w` the detection scale (with the local residual, the default, `11w` in place of
-  /// `6w`, and on a mirror symmetric surface times `min(1, (a/a0)^2)`, `a` the region's
-  /// asymmetry and `a0` the surface's own: symmetric regions are design). Regions are reported by
-  /// decreasing `confidence * score`.
+  /// `6w`, also `min(1, A0 / A)` with `A` the area of the faces the anomalies' cluster covers
+  /// and `A0` that of the disc of diameter `11w`, and on a mirror symmetric surface times
+  /// `min(1, (a/a0)^2)`, `a` the region's asymmetry and `a0` the surface's own: symmetric
+  /// regions are design). The second factor, where below 1 (the region is larger than a
+  /// defect of the scale can make), is halved: such a region never reaches the 0.5 at which
+  /// `detect_and_fair_highlight_line_irregularities()` fairs by default. Regions are reported
+  /// by decreasing `confidence * score`.
   double confidence = 0;
   /// The detection scale `w` (in mean edge lengths) of the sweep that found the region: the
   /// scale `detection_scale`, or with several `number_of_scales` the one at which the region

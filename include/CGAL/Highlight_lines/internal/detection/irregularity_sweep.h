@@ -201,7 +201,8 @@ public:
       // shape of each cluster.
       auto cluster = [&](const std::vector<std::size_t>& members,
                          std::vector<std::size_t>& cluster_of,
-                         std::vector<std::array<double, 2>>& cluster_shape) {
+                         std::vector<std::array<double, 2>>& cluster_shape,
+                         std::vector<double>& cluster_area) {
         std::vector<Anomaly> subset;
         for (std::size_t i : members)
           subset.push_back(anomalies[i]);
@@ -210,6 +211,7 @@ public:
             std::vector<std::size_t>(static_cast<std::size_t>(nv_), std::size_t(1)), sharp_);
         cluster_of.assign(anomalies.size(), std::size_t(-1));
         cluster_shape.assign(clusters.size(), {0, 0});
+        cluster_area.assign(clusters.size(), 0);
         for (std::size_t k = 0; k < clusters.size(); ++k) {
           std::set<int> cluster_vertices;
           for (std::size_t j : clusters[k].anomalies) {
@@ -217,6 +219,8 @@ public:
             cluster_vertices.insert(subset[j].vertex);
           }
           cluster_shape[k] = spreads_of_vertices(points_, cluster_vertices);
+          for (int f : clusters[k].faces)
+            cluster_area[k] += face_area(f);
         }
       };
       std::vector<std::size_t> all_anomalies(anomalies.size());
@@ -224,7 +228,8 @@ public:
         all_anomalies[i] = i;
       std::vector<std::size_t> cluster_of;
       std::vector<std::array<double, 2>> cluster_shape;
-      cluster(all_anomalies, cluster_of, cluster_shape);
+      std::vector<double> cluster_area;
+      cluster(all_anomalies, cluster_of, cluster_shape, cluster_area);
       // On a mirror symmetric surface, the anomalies of the design are explained by the
       // symmetry; a defect next to a feature would chain with the feature's anomalies and look
       // elongated. So the shape of a region that holds anomalies near asymmetric vertices (those
@@ -233,6 +238,7 @@ public:
       std::vector<char> asymmetric;
       std::vector<std::size_t> asymmetric_cluster_of;
       std::vector<std::array<double, 2>> asymmetric_shape;
+      std::vector<double> asymmetric_area;
       if (mirror_ && mirror_->is_symmetric()) {
         asymmetric.assign(static_cast<std::size_t>(nv_), 0);
         for (int v = 0; v < nv_; ++v) {
@@ -246,7 +252,7 @@ public:
         for (std::size_t i = 0; i < anomalies.size(); ++i)
           if (asymmetric[std::size_t(anomalies[i].vertex)])
             members.push_back(i);
-        cluster(members, asymmetric_cluster_of, asymmetric_shape);
+        cluster(members, asymmetric_cluster_of, asymmetric_shape, asymmetric_area);
       }
       // The contrast of each region with its surroundings (between `disc` and `surroundings`
       // from its centre), from every scored sample.
@@ -285,13 +291,15 @@ public:
         // Local or not: the shape of the cluster of the region's strongest anomaly (its spread
         // along its two main axes, four standard deviations). The fit of a sample sees a defect
         // up to 4w away, so a defect up to the detection's scale (R <= 3w/2) spreads its
-        // anomalies over a length of at most 2R + 8w = 11w; longer clusters are shape at another
-        // scale, and those more than twice as long as wide follow a feature.
+        // anomalies over a length of at most 2R + 8w = 11w; longer clusters, or clusters whose
+        // faces cover more than a disc of that diameter, are shape at another scale, and those
+        // more than twice as long as wide follow a feature.
         std::size_t strongest = region.anomalies.front();
         for (std::size_t i : region.anomalies)
           if (anomalies[i].score > anomalies[strongest].score)
             strongest = i;
         std::array<double, 2> axes = cluster_shape[cluster_of[strongest]];
+        double area = cluster_area[cluster_of[strongest]];
         if (!asymmetric.empty()) {
           std::size_t strongest_asymmetric = std::size_t(-1);
           for (std::size_t i : region.anomalies)
@@ -299,10 +307,12 @@ public:
                 (strongest_asymmetric == std::size_t(-1) ||
                  anomalies[i].score > anomalies[strongest_asymmetric].score))
               strongest_asymmetric = i;
-          if (strongest_asymmetric != std::size_t(-1))
+          if (strongest_asymmetric != std::size_t(-1)) {
             axes = asymmetric_shape[asymmetric_cluster_of[strongest_asymmetric]];
+            area = asymmetric_area[asymmetric_cluster_of[strongest_asymmetric]];
+          }
         }
-        const Anomaly_shape shape = anomaly_shape(axes, w, 11 * w);
+        const Anomaly_shape shape = anomaly_shape(axes, w, 11 * w, area);
         const double seeing =
             double((std::max)(std::size_t(1), scoring_setups_[std::size_t(region.centre)]));
         irregularity.confidence =
@@ -458,6 +468,14 @@ private:
     if (!node.is_on_vertex())
       v = node.parameter < 0.5 ? source(node.halfedge, tm_) : target(node.halfedge, tm_);
     return compact_vertex(v);
+  }
+
+  double face_area(int f) const
+  {
+    using namespace vector3;
+    const auto& c = corners_[std::size_t(f)];
+    const Vec3& p = points_[std::size_t(c[0])];
+    return norm(cross(points_[std::size_t(c[1])] - p, points_[std::size_t(c[2])] - p)) / 2;
   }
 
   // Whether a highlight node lies on a sharp edge's vertex or on an edge with one: the line
