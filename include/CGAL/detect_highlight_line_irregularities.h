@@ -142,10 +142,11 @@ the setups. A defect stands out of a quiet patch; on a scan or a coarse mesh the
 about as much around a feature (an eye, an ear, a tessellated fillet) as on it. The `kind` and the `confidence` are those
 above, computed on the cluster (anomalies less than `detection_scale` edges apart, chained)
 of the region's strongest anomaly, with `11w` in place of `6w` (the fit sees a defect from
-`4w` away); a cluster whose faces cover more than the disc of diameter `11w` is `EXTENDED` too
+`4w` away); a cluster whose faces cover more than the disc of diameter `11w` (grown by the
+rings the faces reach beyond the anomalies) is `EXTENDED` too
 (on a small or compact mesh, a cluster that wraps around the surface spreads less in space than
 along it: on a sculpture of 4,494 vertices, 70 mean edge lengths across, one cluster over most
-of the surface measured `13w` in space and covered 1.8 such discs).
+of the surface measured `13w` in space and covered 1.2 such grown discs).
 
 <b>Design is symmetric (local residual).</b> Designed shapes are mostly mirror
 symmetric, and so is their design: a feature has its mirror image, or lies on the plane and is
@@ -195,10 +196,10 @@ fandisk, 0.125 on the camel head and 0 on the rocker arm, whose tessellated blen
 lines more than a defect 0.2 ē high (the camel head's mirror symmetry, a scan's, is accepted
 but its own asymmetry, 0.21 ē, is as large as the defects). The fandisk's missed defects lie
 within 1.2–4.3 ē of a sharp edge, where the lines are not scored. Regions of confidence ≥ 0.5
-(those `detect_and_fair_highlight_line_irregularities()` fairs) hold 57 of the 184 defects
-(beetle 14, bunny 6, camel head 9, fandisk 12, rocker arm 0, spot 16) and 36 design regions
-over the 48 dented meshes (camel head 24, rocker arm 6, spot 6); the undented meshes have 7
-(camel head 6, rocker arm 1). The bending measure's regions of that confidence hold no defect,
+(those `detect_and_fair_highlight_line_irregularities()` fairs) hold 44 of the 184 defects
+(beetle 12, bunny 5, camel head 4, fandisk 12, rocker arm 0, spot 11) and 10 design regions
+over the 48 dented meshes (camel head 1, rocker arm 6, spot 3); the undented meshes have 1
+(rocker arm). The bending measure's regions of that confidence hold no defect,
 and 11 design regions. On the bundled demo (`benchmark_detection --demo`) the roof dent is the
 first region, a `DENT` of confidence 1, and the 33 design regions have confidence 0.0054 at
 most. Two scales (`--scales 2`) locate no more defects there and rank fewer above the undented

@@ -27,9 +27,12 @@ enum class Irregularity_kind {
   /// scale): the lines kink along a feature (a fillet, a panel joint, a crease
   /// softer than the sharp-edge angle) rather than at one place. Usually design.
   ELONGATED,
-  /// Anomalies spread over more than six times the detection scale `w` in every direction: a
-  /// change of shape at a larger scale than a defect the detection looks for (a defect of
-  /// radius `R <= 3w/2` spreads its anomalies over at most `2R + 3w`). Usually design.
+  /// Anomalies spread wider than a defect the detection looks for can spread them: along their
+  /// main axis over more than `6w` (`w` the detection scale; a defect of radius `R <= 3w/2`
+  /// spreads its anomalies over at most `2R + 3w`), with the local residual `11w` or a cluster
+  /// of them covering more than the disc of that diameter. A change of shape at a larger scale,
+  /// or, on a small or compact mesh, a cluster that wraps around the surface. Usually design;
+  /// its `confidence` is below 0.5.
   EXTENDED
 };
 
@@ -96,17 +99,18 @@ struct Highlight_line_irregularity
   Irregularity_kind kind = Irregularity_kind::DENT;
   /// How sure the detection is that the region is a local defect rather than design, in
   /// [0, 1]: the fraction of the sweep's light setups that showed an anomaly in it, times
-  /// `min(1, (2 max(b, w) / l)^2)` (small for a region elongated along a feature) and
-  /// `min(1, (6w / l)^2)` (small for a region much larger than a defect), where `l` and `b`
-  /// are four standard deviations of the positions of the anomalies along their two main axes
-  /// and `w` the detection scale (with the local residual, the default, `11w` in place of
-  /// `6w`, also `min(1, A0 / A)` with `A` the area of the faces the anomalies' cluster covers
-  /// and `A0` that of the disc of diameter `11w`, and on a mirror symmetric surface times
-  /// `min(1, (a/a0)^2)`, `a` the region's asymmetry and `a0` the surface's own: symmetric
-  /// regions are design). The second factor, where below 1 (the region is larger than a
-  /// defect of the scale can make), is halved: such a region never reaches the 0.5 at which
-  /// `detect_and_fair_highlight_line_irregularities()` fairs by default. Regions are reported
-  /// by decreasing `confidence * score`.
+  /// `min(1, (2 max(b, w) / l)^2)` (small for a region elongated along a feature) and a
+  /// locality factor `min(1, (6w / l)^2)` (small for a region much larger than a defect),
+  /// where `l` and `b` are four standard deviations of the positions of the anomalies along
+  /// their two main axes and `w` the detection scale. With the local residual, the default, the
+  /// locality factor is `min(1, (11w / l)^2, A0 / A)`, `A` the area of the faces the anomalies'
+  /// cluster covers and `A0` that of the disc of diameter `11w` grown by the rings those faces
+  /// reach beyond the anomalies; and on a mirror symmetric surface the confidence is also
+  /// multiplied by `min(1, (a/a0)^2)`, `a` the region's asymmetry and `a0` the surface's own
+  /// (symmetric regions are design). Where the locality factor is below 1 (the region is
+  /// `EXTENDED`, or `ELONGATED` and longer than a defect can make), it is halved: such a region
+  /// never reaches the 0.5 at which `detect_and_fair_highlight_line_irregularities()` fairs by
+  /// default. Regions are reported by decreasing `confidence * score`.
   double confidence = 0;
   /// The detection scale `w` (in mean edge lengths) of the sweep that found the region: the
   /// scale `detection_scale`, or with several `number_of_scales` the one at which the region

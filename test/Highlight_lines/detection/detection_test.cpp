@@ -1218,6 +1218,13 @@ TEST(DefectOrDesign, WhatIsLargerThanADefectGetsLessThanHalfTheConfidence)
   // 8w across, but covering twice the disc (wrapped around a compact surface).
   shape = HLI::anomaly_shape({2.0, 1.8}, w, 11 * w, 2 * disc_area);
   EXPECT_NEAR(shape.locality, 0.25, 1e-12);
+  // The same area from faces that reach w beyond the anomalies: measured against the disc
+  // grown by w.
+  const double grown_disc_area = 3.14159265358979323846 * 6.5 * 6.5;
+  shape = HLI::anomaly_shape({2.0, 1.8}, w, 11 * w, 2 * disc_area, w);
+  EXPECT_NEAR(shape.locality, 0.5 * grown_disc_area / (2 * disc_area), 1e-12);
+  shape = HLI::anomaly_shape({2.0, 1.8}, w, 11 * w, 0.99 * grown_disc_area, w);
+  EXPECT_EQ(shape.locality, 1);
   // Elongated and long: both factors.
   shape = HLI::anomaly_shape({5.5, 0.5}, w, 11 * w);
   EXPECT_LT(shape.slenderness, 1);
@@ -1226,11 +1233,13 @@ TEST(DefectOrDesign, WhatIsLargerThanADefectGetsLessThanHalfTheConfidence)
             HL::Irregularity_kind::ELONGATED);
 }
 
-// A sphere of 17 ē radius textured all over by 400 bumps and dimples (Gaussian, 2 ē wide,
-// 0.3 ē high): design over the whole surface, whose anomalies join into clusters as wide as
-// the sphere (4 standard deviations: about 13w; area: several times a defect's disc). Every
-// EXTENDED region stays below the automatic mode's 0.5. Measured before the rule: 11 extended
-// regions, two of confidence 0.51; after: at most 0.26.
+// A sphere of 17 ē radius textured all over by 400 bumps and dimples (Gaussian, σ = √2 ē,
+// 0.3 ē high): design over the whole surface, whose anomalies join into clusters over the whole
+// sphere. At the default scale (w = 3 ē) they are longer than 11w (4 standard deviations: about
+// 13w): every region is EXTENDED and stays below the automatic mode's 0.5 (measured before the
+// rule: two extended regions of confidence 0.51; after: at most 0.26). At w = 4 ē they are
+// shorter than 11w but cover more than a defect's disc (grown as the clusters' faces are): still
+// EXTENDED by their area (measured before: 8 dents, 6 of confidence 1; after: at most 0.4).
 TEST(LocalResidual, LeavesADesignTextureOverACompactSurfaceAlone)
 {
   HB::Mesh mesh = test::to_mesh<HB::Mesh>(test::sphere(1.0, 5));
@@ -1253,14 +1262,23 @@ TEST(LocalResidual, LeavesADesignTextureOverACompactSurfaceAlone)
     }
     mesh.point(v) = test::Point(p.x() * (1 + height), p.y() * (1 + height), p.z() * (1 + height));
   }
-  const auto found = detect_local_residual(mesh, true);
   std::size_t extended = 0;
-  for (const auto& region : found)
+  for (const auto& region : detect_local_residual(mesh, true))
     if (region.kind == HL::Irregularity_kind::EXTENDED) {
       ++extended;
       EXPECT_LT(region.confidence, 0.5) << HB::describe(region);
     }
   EXPECT_GE(extended, 5u); // the texture is found, and found to be wider than a defect
+
+  std::vector<HB::Irregularity> coarser;
+  CGAL::detect_highlight_line_irregularities(
+      mesh, HL::default_light_setup(mesh, HLP::number_of_lines(30)), std::back_inserter(coarser),
+      HLP::local_residual(HLP::detection_scale(HLP::all_sides(true), 4.0), true));
+  EXPECT_GE(coarser.size(), 3u);
+  for (const auto& region : coarser) {
+    EXPECT_EQ(region.kind, HL::Irregularity_kind::EXTENDED) << HB::describe(region);
+    EXPECT_LT(region.confidence, 0.5) << HB::describe(region);
+  }
 }
 
 TEST(Detection, RejectsNonFiniteCoordinates)

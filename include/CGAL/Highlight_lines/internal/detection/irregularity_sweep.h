@@ -198,7 +198,7 @@ public:
       // soft crease chain along it, those of a change of shape at a larger scale over it.
       const int join_rings = (std::max)(1, int(std::ceil(scale)));
       // The cluster of each anomaly of `members` (indices into `anomalies`) among them, and the
-      // shape of each cluster.
+      // shape and the area (of its faces) of each cluster.
       auto cluster = [&](const std::vector<std::size_t>& members,
                          std::vector<std::size_t>& cluster_of,
                          std::vector<std::array<double, 2>>& cluster_shape,
@@ -312,7 +312,9 @@ public:
             area = asymmetric_area[asymmetric_cluster_of[strongest_asymmetric]];
           }
         }
-        const Anomaly_shape shape = anomaly_shape(axes, w, 11 * w, area);
+        // The faces of a cluster reach `join_rings` rings beyond its anomalies, and one more.
+        const Anomaly_shape shape =
+            anomaly_shape(axes, w, 11 * w, area, (join_rings + 1) * mean_edge_);
         const double seeing =
             double((std::max)(std::size_t(1), scoring_setups_[std::size_t(region.centre)]));
         irregularity.confidence =

@@ -27,24 +27,27 @@ namespace internal {
 // width, the width at least `w`). Anomalies more than twice as long as wide follow a feature
 // (slenderness < 1); longer than `longest`, the length over which a defect up to the
 // detection's scale spreads its anomalies, they are shape at another scale (locality < 1). So
-// are anomalies whose cluster covers more than the disc of diameter `longest` (`area`, if
-// given: the area of its faces): on a small or compact mesh a cluster that wraps around the
-// surface spreads less in space than along it. What is not local gets at most half the
-// confidence, so that the default `minimum_confidence` (0.5) fairs no such region.
+// are anomalies whose faces cover more than the disc of diameter `longest` grown by `margin`
+// (`area`, if positive: the area of the faces of the cluster, which reach `margin` beyond its
+// anomalies): on a small or compact mesh a cluster that wraps around the surface spreads less
+// in space than along it. What is not local gets at most half the confidence, so that the
+// default `minimum_confidence` (0.5) fairs no such region.
 struct Anomaly_shape
 {
   double slenderness = 1, locality = 1;
 };
 
 inline Anomaly_shape anomaly_shape(const std::array<double, 2>& axes, double w, double longest,
-                                   double area = 0)
+                                   double area = 0, double margin = 0)
 {
-  const double pi = 3.14159265358979323846;
   const double length = 4 * axes[0], width = (std::max)(4 * axes[1], w);
   Anomaly_shape shape;
   shape.slenderness = (std::min)(1.0, std::pow(2 * width / (std::max)(length, 1e-300), 2));
-  shape.locality = (std::min)({1.0, std::pow(longest / (std::max)(length, 1e-300), 2),
-                               pi * longest * longest / 4 / (std::max)(area, 1e-300)});
+  shape.locality = (std::min)(1.0, std::pow(longest / (std::max)(length, 1e-300), 2));
+  if (area > 0) {
+    const double disc_area = 3.14159265358979323846 * std::pow(longest / 2 + margin, 2);
+    shape.locality = (std::min)(shape.locality, disc_area / area);
+  }
   if (shape.locality < 1)
     shape.locality /= 2;
   return shape;
